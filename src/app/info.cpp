@@ -1,0 +1,97 @@
+// SPDX-License-Identifier: MIT
+// Scene information and help texts.
+#include "app/info.hpp"
+
+#include <algorithm>
+#include <fmt/format.h>
+
+#include "dem/contact/registry.hpp"
+#include "dem/setup.hpp"
+#include "io/validate.hpp"
+#include "model/particle_store.hpp"
+
+namespace granulab::app {
+
+int infoCommand(const std::string& scenePath, const std::vector<io::Override>& overrides) {
+    const model::SceneDef scene = io::readScene(scenePath, overrides);
+    const io::ValidatedScene v = io::validate(scene);
+    const auto names = dem::materialNames(scene);
+    const auto& ps = v.initial.particles;
+    fmt::print("scene        {}\n", scenePath);
+    if (!scene.run.title.empty()) fmt::print("title        {}\n", scene.run.title);
+    fmt::print("engine       {} ({}D), integrator {}, broad phase {}\n", scene.run.engine, scene.run.dimension,
+               scene.dem.integrator, scene.dem.broadPhase);
+    fmt::print("particles    {} disks\n", ps.size());
+    for (std::size_t m = 0; m < names.size(); ++m) {
+        std::size_t count = 0;
+        Real rmin = 1e300, rmax = 0, mass = 0;
+        for (const auto& p : ps)
+            if (p.material == m) {
+                ++count;
+                rmin = std::min(rmin, p.radius);
+                rmax = std::max(rmax, p.radius);
+                mass += model::diskMass(scene.materials[m].density, p.radius);
+            }
+        if (count)
+            fmt::print("  material {:<12} {:>9} disks, radius {:.4g}..{:.4g} m, density {:.4g} kg/m^2, total mass {:.4g} kg\n",
+                       names[m], count, rmin, rmax, scene.materials[m].density, mass);
+        else
+            fmt::print("  material {:<12} (walls only)\n", names[m]);
+    }
+    std::size_t segments = 0;
+    for (const auto& w : scene.walls) segments += w.closed ? w.points.size() : w.points.size() - 1;
+    fmt::print("walls        {} ({} segments)\n", scene.walls.size(), segments);
+    fmt::print("contact laws {}\n", scene.contacts.size());
+    for (const auto& c : scene.contacts)
+        fmt::print("  {}/{}: normal {}, damping {}, tangential {}\n", c.materialA, c.materialB, c.normal, c.damping,
+                   c.tangential);
+    fmt::print("time step    dt = {:.4g} s, end time {:.6g} s, {} steps\n", scene.dem.dt, scene.run.endTime,
+               static_cast<long long>(scene.run.endTime / scene.dem.dt + 0.5));
+    fmt::print("contact time {:.4g} s ({}), {:.1f} steps per contact\n", v.advice.contactTime, v.advice.pair,
+               v.advice.contactTime / scene.dem.dt);
+    fmt::print("advised dt   {:.4g} s (contact time / 50); stability limit {:.4g} s\n", v.advice.advisedDt,
+               v.advice.stabilityLimit);
+    // Estimate: store + ~3 candidate pairs per disk (16 B each) + reference positions + grid.
+    const double perDisk = static_cast<double>(model::ParticleStore::kBytesPerParticle) + 3 * 16 + 16 + 12;
+    fmt::print("memory       ~{:.3g} MB ({:.0f} bytes per disk, estimate)\n", perDisk * static_cast<double>(ps.size()) / 1e6,
+               perDisk);
+    for (const auto& w : v.warnings) fmt::print("warning      {}\n", w);
+    return 0;
+}
+
+std::string helpText(const std::string& topic) {
+    if (topic == "laws") {
+        std::string s = "Contact laws ([[contact]] keys normal, damping, tangential and their parameters):\n";
+        const char* axisNames[] = {"normal", "damping", "tangential"};
+        for (const auto& e : dem::lawRegistry()) {
+            s += fmt::format("\n  {} = \"{}\": {}\n", axisNames[static_cast<int>(e.axis)], e.keyword, e.doc);
+            for (const auto& p : e.params)
+                s += fmt::format("      {:<10} [{}] {}; allowed {}; default {}\n", p.key, p.unit, p.doc, p.rangeText(),
+                                 p.defaultText);
+        }
+        s += "\n  any law:\n";
+        for (const auto& p : dem::commonLawParams())
+            s += fmt::format("      {:<16} {}; default {}\n", p.key, p.doc, p.defaultText);
+        return s;
+    }
+    return R"(granulab - granular matter simulation
+
+usage:
+  granulab run SCENE [--out DIR] [--set key=value]... [--resume DIR] [--quiet]
+      simulate; writes summary.json, series.csv, final.csv, VTK snapshots (snapshots.pvd)
+      and checkpoint.bin into DIR (default out/<scene name>)
+  granulab info SCENE [--set key=value]...
+      particles, materials, contact time, advised time step, memory estimate
+  granulab render DIR --png [--width PIXELS]
+      one PNG per snapshot of a finished or running simulation, into DIR/png/
+  granulab help [laws]
+      this text, or the table of contact laws and their parameters
+  granulab --version
+
+exit status: 0 success, 2 bad input (scene errors are listed with file:line),
+             3 run stopped because it became numerically unstable, 1 other failure.
+docs: docs/getting-started.md, docs/scene-format.md, docs/physics/contact-laws.md
+)";
+}
+
+}  // namespace granulab::app

@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: MIT
+// granulab command line (CLI11): run, info, render, help, --version. Maps errors to exit codes:
+// 2 bad input, 3 unstable run, 1 anything else.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <exception>
+#include <fmt/format.h>
+
+#include "app/info.hpp"
+#include "app/render.hpp"
+#include "app/run.hpp"
+#include "core/error.hpp"
+#include "core/version.hpp"
+
+using namespace granulab;
+
+int main(int argc, char** argv) {
+    CLI::App cli{"granulab - granular matter simulation (DEM). See `granulab help`."};
+    cli.set_version_flag("--version", std::string("granulab ") + kVersion);
+    cli.require_subcommand(0, 1);
+
+    app::RunOptions runOpt;
+    std::vector<std::string> sets;
+    auto* run = cli.add_subcommand("run", "run a scene");
+    run->add_option("scene", runOpt.scene, "scene file (.toml)")->required();
+    run->add_option("--out", runOpt.outDir, "output folder (default out/<scene name>)");
+    run->add_option("--set", sets, "override a scene key: --set dem.dt=1e-5 (repeatable)")->take_all();
+    run->add_option("--resume", runOpt.resumeDir, "continue from DIR/checkpoint.bin");
+    run->add_flag("--quiet,-q", runOpt.quiet, "no progress output");
+
+    std::string infoScene;
+    auto* info = cli.add_subcommand("info", "describe a scene: particles, advised time step, memory");
+    info->add_option("scene", infoScene, "scene file")->required();
+    info->add_option("--set", sets, "override a scene key")->take_all();
+
+    std::string renderDir;
+    bool png = false;
+    int width = 1200;
+    bool renderQuiet = false;
+    auto* render = cli.add_subcommand("render", "draw the snapshots of an output folder");
+    render->add_option("dir", renderDir, "output folder of a run")->required();
+    render->add_flag("--png", png, "write PNG pictures (DIR/png/)");
+    render->add_option("--width", width, "picture width in pixels")->check(CLI::Range(64, 16384));
+    render->add_flag("--quiet,-q", renderQuiet, "no messages");
+
+    std::string helpTopic;
+    auto* help = cli.add_subcommand("help", "usage, or `help laws` for the contact-law table");
+    help->add_option("topic", helpTopic, "laws");
+
+    try {
+        cli.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        const int code = cli.exit(e);
+        return code == 0 ? 0 : app::kExitBadInput;
+    }
+    try {
+        std::vector<io::Override> overrides;
+        for (const auto& s : sets) overrides.push_back(io::parseOverride(s));
+        if (*run) {
+            runOpt.overrides = overrides;
+            return app::runCommand(runOpt);
+        }
+        if (*info) return app::infoCommand(infoScene, overrides);
+        if (*render) {
+            if (!png) {
+                fmt::print(stderr, "granulab render: choose an output format (--png)\n");
+                return app::kExitBadInput;
+            }
+            return app::renderCommand(renderDir, width, renderQuiet);
+        }
+        fmt::print("{}", app::helpText(*help ? helpTopic : ""));
+        return 0;
+    } catch (const SceneError& e) {
+        std::fputs(e.what(), stderr);
+        return app::kExitBadInput;
+    } catch (const std::exception& e) {
+        fmt::print(stderr, "error: {}\n", e.what());
+        return app::kExitFailure;
+    }
+}

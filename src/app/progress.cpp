@@ -1,0 +1,70 @@
+// SPDX-License-Identifier: MIT
+// Progress bar / periodic log lines.
+#include "app/progress.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include "core/timer.hpp"
+
+namespace granulab::app {
+
+namespace {
+std::string clock(double seconds) {
+    if (!(seconds >= 0) || seconds > 1e7) return "--:--";
+    const auto s = static_cast<long>(seconds + 0.5);
+    if (s >= 3600) return fmt::format("{}:{:02}:{:02}", s / 3600, (s / 60) % 60, s % 60);
+    return fmt::format("{:02}:{:02}", s / 60, s % 60);
+}
+}  // namespace
+
+Progress::Progress(double endTime, bool quiet)
+    : m_endTime(endTime), m_quiet(quiet), m_tty(isatty(fileno(stderr)) != 0), m_start(wallSeconds()), m_last(m_start) {}
+
+void Progress::update(double simTime, std::int64_t steps) {
+    if (m_quiet || steps < m_nextCheck) return;
+    m_nextCheck = steps + 64;  // look at the clock only every 64 steps
+    if (m_startSimTime < 0) {
+        m_startSimTime = simTime;
+        m_startSteps = steps;
+    }
+    const double now = wallSeconds();
+    if (now - m_last < (m_tty ? 0.25 : 10.0)) return;
+    m_last = now;
+    print(simTime, steps, false);
+}
+
+void Progress::finish(double simTime, std::int64_t steps) {
+    if (m_quiet) return;
+    if (m_startSimTime < 0) {
+        m_startSimTime = simTime;
+        m_startSteps = steps;
+    }
+    print(simTime, steps, true);
+}
+
+void Progress::print(double simTime, std::int64_t steps, bool final) {
+    const double elapsed = wallSeconds() - m_start;
+    const double rate = elapsed > 0 ? static_cast<double>(steps - m_startSteps) / elapsed : 0;
+    const double done = m_endTime > 0 ? std::clamp(simTime / m_endTime, 0.0, 1.0) : 1.0;
+    const double simDone = simTime - m_startSimTime, simLeft = m_endTime - simTime;
+    const double eta = simDone > 0 ? elapsed * simLeft / simDone : -1;
+    if (m_tty) {
+        constexpr int kWidth = 30;
+        const int filled = static_cast<int>(done * kWidth);
+        std::string bar(static_cast<std::size_t>(filled), '=');
+        if (filled < kWidth) bar += '>' + std::string(static_cast<std::size_t>(kWidth - filled - 1), ' ');
+        std::fprintf(stderr, "\r[%s] t = %.4g / %.4g s  %.3g steps/s  %s %s ", bar.c_str(), simTime, m_endTime, rate,
+                     final ? "elapsed" : "ETA", clock(final ? elapsed : eta).c_str());
+        if (final) std::fputc('\n', stderr);
+    } else {
+        std::fprintf(stderr, "progress: t = %.6g / %.6g s (%.1f %%), %lld steps, %.3g steps/s, %s %s\n", simTime, m_endTime,
+                     100 * done, static_cast<long long>(steps), rate, final ? "elapsed" : "ETA",
+                     clock(final ? elapsed : eta).c_str());
+    }
+    std::fflush(stderr);
+}
+
+}  // namespace granulab::app

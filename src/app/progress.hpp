@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: MIT
+// Run progress: a bar with simulated time, steps/s and ETA on a terminal; plain log lines every
+// 10 s of wall time otherwise (CI logs, pipes).
+#pragma once
+#include <cstdint>
+#include <string>
+
+namespace granulab::app {
+
+class Progress {
+public:
+    Progress(double endTime, bool quiet);
+    /// Called every step; cheap unless an update is due.
+    void update(double simTime, std::int64_t steps);
+    void finish(double simTime, std::int64_t steps);
+
+private:
+    void print(double simTime, std::int64_t steps, bool final);
+    double m_endTime;
+    bool m_quiet;
+    bool m_tty;
+    double m_start;
+    double m_last;
+    double m_startSimTime = -1;
+    std::int64_t m_startSteps = 0;
+    std::int64_t m_nextCheck = 0;
+};
+
+}  // namespace granulab::app

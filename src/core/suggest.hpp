@@ -1,0 +1,19 @@
+// SPDX-License-Identifier: MIT
+// "Did you mean" hints for unknown keys and names (edit distance).
+#pragma once
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace granulab {
+
+/// Levenshtein distance, case-insensitive.
+std::size_t editDistance(std::string_view a, std::string_view b);
+
+/// " (did you mean 'x'?)" for the closest candidate within a small distance, else "".
+std::string didYouMean(std::string_view word, const std::vector<std::string>& candidates);
+
+/// "a, b, c" for messages listing the allowed values.
+std::string joinList(const std::vector<std::string>& items);
+
+}  // namespace granulab

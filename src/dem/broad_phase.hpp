@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: MIT
+// Broad phase behind one interface (DESIGN.md step stage 3): candidate disk pairs and
+// disk-wall pairs within a distance margin. Called only when the neighbour list is rebuilt, so
+// the virtual call is per rebuild, not per pair. Brute force is the test reference.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "model/particle_store.hpp"
+#include "model/walls.hpp"
+
+namespace granulab::dem {
+
+/// Pair key: (first << 32) | second. For particle pairs first < second (slots).
+inline std::uint64_t pairKey(std::uint32_t a, std::uint32_t b) noexcept {
+    return (static_cast<std::uint64_t>(a) << 32) | b;
+}
+inline std::uint32_t keyFirst(std::uint64_t k) noexcept { return static_cast<std::uint32_t>(k >> 32); }
+inline std::uint32_t keySecond(std::uint64_t k) noexcept { return static_cast<std::uint32_t>(k); }
+
+class BroadPhase {
+public:
+    virtual ~BroadPhase() = default;
+    virtual const char* name() const noexcept = 0;
+    /// All slot pairs (i < j) with |x_i - x_j| < r_i + r_j + margin, sorted ascending by key.
+    virtual void findPairs(const model::ParticleStore& s, Real margin, std::vector<std::uint64_t>& out) = 0;
+    /// All (slot, segment) pairs with distance(centre, segment) < r + margin, sorted by key.
+    virtual void findWallPairs(const model::ParticleStore& s, const model::WallSet& walls, Real margin,
+                               std::vector<std::uint64_t>& out) = 0;
+    /// A slot order that groups nearby particles (for cache locality); empty = keep order.
+    virtual std::vector<std::uint32_t> spatialOrder(const model::ParticleStore&) { return {}; }
+    /// Bytes held between calls.
+    virtual std::size_t memoryBytes() const noexcept { return 0; }
+};
+
+/// O(N^2) reference.
+class BruteForce final : public BroadPhase {
+public:
+    const char* name() const noexcept override { return "brute_force"; }
+    void findPairs(const model::ParticleStore& s, Real margin, std::vector<std::uint64_t>& out) override;
+    void findWallPairs(const model::ParticleStore& s, const model::WallSet& walls, Real margin,
+                       std::vector<std::uint64_t>& out) override;
+};
+
+/// Uniform cell grid with cell size >= 2 r_max + margin, so any size distribution is safe;
+/// the grid spans the particles' bounding box, so no particle can leave it.
+class CellGrid final : public BroadPhase {
+public:
+    const char* name() const noexcept override { return "cell_grid"; }
+    void findPairs(const model::ParticleStore& s, Real margin, std::vector<std::uint64_t>& out) override;
+    void findWallPairs(const model::ParticleStore& s, const model::WallSet& walls, Real margin,
+                       std::vector<std::uint64_t>& out) override;
+    std::vector<std::uint32_t> spatialOrder(const model::ParticleStore& s) override;
+    std::size_t memoryBytes() const noexcept override;
+
+private:
+    void bin(const model::ParticleStore& s, Real margin);
+    Real m_cell = 1, m_x0 = 0, m_y0 = 0;
+    std::int64_t m_nx = 1, m_ny = 1;
+    std::vector<std::uint32_t> m_cellStart;  ///< size cells + 1
+    std::vector<std::uint32_t> m_sorted;     ///< slots grouped by cell
+    std::vector<std::uint32_t> m_cellOf;     ///< cell of each slot
+};
+
+std::unique_ptr<BroadPhase> makeBroadPhase(const std::string& name);
+/// Names accepted by makeBroadPhase.
+std::vector<std::string> broadPhaseNames();
+
+}  // namespace granulab::dem

@@ -1,0 +1,238 @@
+// SPDX-License-Identifier: MIT
+// Force loops. Why this shape: the law form is dispatched once per bucket (std::visit over the
+// three axis variants), the loop body is a template with the law inlined; parameters of a
+// material pair are read from the LawTable with the alternative known at compile time.
+// Pairs are processed in list order, so the floating-point summation order is fixed.
+#include "dem/forces.hpp"
+
+#include <cmath>
+#include <type_traits>
+
+#include "dem/contact/kernel.hpp"
+#include "geom/segment.hpp"
+
+namespace granulab::dem {
+
+namespace {
+
+template <class N, class D, class T>
+ResolvedLaw<N, D, T> resolve(const ContactLaw& law) noexcept {
+    return {*std::get_if<N>(&law.normal), *std::get_if<D>(&law.damping), *std::get_if<T>(&law.tangential),
+            law.clipAttraction};
+}
+
+/// Visits the form of a bucket with its concrete axis types.
+template <class Fn>
+void visitForm(const ContactLaw& rep, Fn&& fn) {
+    std::visit(
+        [&](const auto& n, const auto& d, const auto& t) {
+            using N = std::decay_t<decltype(n)>;
+            using D = std::decay_t<decltype(d)>;
+            using T = std::decay_t<decltype(t)>;
+            fn(static_cast<N*>(nullptr), static_cast<D*>(nullptr), static_cast<T*>(nullptr));
+        },
+        rep.normal, rep.damping, rep.tangential);
+}
+
+/// Disk-disk contacts of one bucket. n points from i to j; t = perp(n).
+/// Tangential displacement [m] of the contact points during the step, from the drift velocities.
+inline Real tangentialIncrement(const DriftVelocities& d, std::uint32_t i, std::uint32_t j, Real ri, Real rj,
+                                Real nx, Real ny, Real dt) noexcept {
+    const Real wsum = d.omega[i] * ri + d.omega[j] * rj;
+    const Real vrx = d.vx[i] - d.vx[j] - wsum * ny;
+    const Real vry = d.vy[i] - d.vy[j] + wsum * nx;
+    return (-vrx * ny + vry * nx) * dt;
+}
+
+template <class N, class D, class T>
+void diskPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, std::uint32_t end,
+               const LawTable& laws, const DriftVelocities& drift, Real dt, ForceStats& stats) noexcept {
+    const std::uint32_t nm = laws.materialCount();
+    const ContactLaw* table = laws.laws().data();
+    const Real* __restrict x = s.x.data();
+    const Real* __restrict y = s.y.data();
+    const Real* __restrict vx = s.vx.data();
+    const Real* __restrict vy = s.vy.data();
+    const Real* __restrict om = s.omega.data();
+    const Real* __restrict rad = s.radius.data();
+    const Real* __restrict mass = s.mass.data();
+    const std::uint32_t* __restrict mat = s.material.data();
+    Real* __restrict fx = s.fx.data();
+    Real* __restrict fy = s.fy.data();
+    Real* __restrict tq = s.torque.data();
+    const std::uint32_t* __restrict pi = list.first.data();
+    const std::uint32_t* __restrict pj = list.second.data();
+    Real* __restrict xiHist = list.xi.data();
+    std::uint64_t contacts = 0;
+    Real maxRel = stats.maxRelativeOverlap;
+    for (std::uint32_t p = begin; p < end; ++p) {
+        const std::uint32_t i = pi[p], j = pj[p];
+        const Real dx = x[j] - x[i], dy = y[j] - y[i];
+        const Real ri = rad[i], rj = rad[j];
+        const Real rsum = ri + rj;
+        const Real r2 = dx * dx + dy * dy;
+        if (r2 >= rsum * rsum) {
+            xiHist[p] = 0;
+            continue;
+        }
+        ++contacts;
+        const Real r = std::sqrt(r2);
+        const Real invR = r > 0 ? 1.0 / r : 0.0;
+        const Real nx = r > 0 ? dx * invR : 1.0, ny = r > 0 ? dy * invR : 0.0;
+        const Real overlap = rsum - r;
+        // Relative velocity of i's contact point w.r.t. j's: v_i - v_j + (w_i r_i + w_j r_j) perp(n).
+        const Real wsum = om[i] * ri + om[j] * rj;
+        const Real vrx = vx[i] - vx[j] - wsum * ny;
+        const Real vry = vy[i] - vy[j] + wsum * nx;
+        const Real mi = mass[i], mj = mass[j];
+        ContactKinematics k;
+        k.overlap = overlap;
+        k.vn = vrx * nx + vry * ny;
+        k.vt = -vrx * ny + vry * nx;
+        k.meff = mi * mj / (mi + mj);
+        k.dxt = 0;
+        if constexpr (!std::is_same_v<T, NoFriction>)
+            if (drift.vx) k.dxt = tangentialIncrement(drift, i, j, ri, rj, nx, ny, dt);
+        const auto law = resolve<N, D, T>(table[static_cast<std::size_t>(mat[i]) * nm + mat[j]]);
+        const ContactForce f = evaluateContact(law, k, xiHist[p]);
+        // Force on i: -fn n + ft t.
+        const Real fxi = -f.fn * nx - f.ft * ny;
+        const Real fyi = -f.fn * ny + f.ft * nx;
+        fx[i] += fxi;
+        fy[i] += fyi;
+        fx[j] -= fxi;
+        fy[j] -= fyi;
+        tq[i] += ri * f.ft;  // arm r_i n, force component ft along perp(n)
+        tq[j] += rj * f.ft;
+        const Real rel = overlap / (ri < rj ? ri : rj);
+        maxRel = rel > maxRel ? rel : maxRel;
+    }
+    stats.contacts += contacts;
+    stats.maxRelativeOverlap = maxRel;
+}
+
+/// Disk-wall contacts of one bucket. n points from the wall to the disk centre.
+template <class N, class D, class T>
+void diskWalls(model::ParticleStore& s, const model::WallSet& walls, ContactList& list, std::uint32_t begin,
+               std::uint32_t end, const LawTable& laws, const DriftVelocities& drift, Real dt, ForceStats& stats,
+               std::vector<Vec2>& wallForce) noexcept {
+    const std::uint32_t nm = laws.materialCount();
+    const ContactLaw* table = laws.laws().data();
+    std::uint64_t contacts = 0;
+    for (std::uint32_t p = begin; p < end; ++p) {
+        const std::uint32_t i = list.first[p];
+        const auto& seg = walls.segments[list.second[p]];
+        const Vec2 c{s.x[i], s.y[i]};
+        const Real r = s.radius[i];
+        const auto g = geom::diskSegmentContact(c, r, seg.a, seg.b, seg.startShared, seg.endShared,
+                                                seg.prevDirection);
+        if (!g.touching || g.overlap <= 0) {
+            list.xi[p] = 0;
+            continue;
+        }
+        ++contacts;
+        const Vec2 n = g.normal;
+        const Vec2 wallVel = walls.walls[seg.wall].velocity;
+        // Contact point at -r n from the centre: v_c = v - w r perp(n).
+        const Real w = s.omega[i] * r;
+        const Vec2 vrel{s.vx[i] + w * n.y - wallVel.x, s.vy[i] - w * n.x - wallVel.y};
+        ContactKinematics k;
+        k.overlap = g.overlap;
+        k.vn = -dot(vrel, n);
+        k.vt = dot(vrel, perp(n));
+        k.meff = s.mass[i];
+        k.dxt = 0;
+        if constexpr (!std::is_same_v<T, NoFriction>) {
+            if (drift.vx) {
+                const Real wh = drift.omega[i] * r;
+                const Vec2 vh{drift.vx[i] + wh * n.y - wallVel.x, drift.vy[i] - wh * n.x - wallVel.y};
+                k.dxt = dot(vh, perp(n)) * dt;
+            }
+        }
+        const auto law = resolve<N, D, T>(table[static_cast<std::size_t>(s.material[i]) * nm + seg.material]);
+        const ContactForce f = evaluateContact(law, k, list.xi[p]);
+        const Real fxi = f.fn * n.x - f.ft * n.y;
+        const Real fyi = f.fn * n.y + f.ft * n.x;
+        s.fx[i] += fxi;
+        s.fy[i] += fyi;
+        s.torque[i] -= r * f.ft;  // arm -r n
+        wallForce[seg.wall] -= Vec2{fxi, fyi};
+        stats.maxRelativeOverlap = std::max(stats.maxRelativeOverlap, g.overlap / r);
+    }
+    stats.wallContacts += contacts;
+}
+
+}  // namespace
+
+void computeForces(model::ParticleStore& s, const model::WallSet& walls, NeighborList& list, const LawTable& laws,
+                   const BodyForces& body, const DriftVelocities& drift, Real dt, ForceStats& stats,
+                   std::vector<Vec2>& wallForce) noexcept {
+    const std::size_t n = s.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        s.fx[i] = s.mass[i] * body.gravity.x - body.gamma * s.vx[i];
+        s.fy[i] = s.mass[i] * body.gravity.y - body.gamma * s.vy[i];
+        s.torque[i] = -body.gammaRotation * s.omega[i];
+    }
+    stats = ForceStats{};
+    for (auto& w : wallForce) w = Vec2{};
+    for (std::uint32_t f = 0; f + 1 < list.pairs.bucketStart.size(); ++f) {
+        const auto b = list.pairs.bucketStart[f], e = list.pairs.bucketStart[f + 1];
+        if (b == e) continue;
+        visitForm(laws.formRepresentative(f), [&](auto* nT, auto* dT, auto* tT) {
+            using N = std::remove_pointer_t<decltype(nT)>;
+            using D = std::remove_pointer_t<decltype(dT)>;
+            using T = std::remove_pointer_t<decltype(tT)>;
+            diskPairs<N, D, T>(s, list.pairs, b, e, laws, drift, dt, stats);
+        });
+    }
+    for (std::uint32_t f = 0; f + 1 < list.wallPairs.bucketStart.size(); ++f) {
+        const auto b = list.wallPairs.bucketStart[f], e = list.wallPairs.bucketStart[f + 1];
+        if (b == e) continue;
+        visitForm(laws.formRepresentative(f), [&](auto* nT, auto* dT, auto* tT) {
+            using N = std::remove_pointer_t<decltype(nT)>;
+            using D = std::remove_pointer_t<decltype(dT)>;
+            using T = std::remove_pointer_t<decltype(tT)>;
+            diskWalls<N, D, T>(s, walls, list.wallPairs, b, e, laws, drift, dt, stats, wallForce);
+        });
+    }
+}
+
+Real contactEnergy(const model::ParticleStore& s, const model::WallSet& walls, const NeighborList& list,
+                   const LawTable& laws) noexcept {
+    Real energy = 0;
+    const std::uint32_t nm = laws.materialCount();
+    const auto eval = [&](const ContactList& cl, bool wall) {
+        for (std::uint32_t f = 0; f + 1 < cl.bucketStart.size(); ++f) {
+            visitForm(laws.formRepresentative(f), [&](auto* nT, auto* dT, auto* tT) {
+                using N = std::remove_pointer_t<decltype(nT)>;
+                using D = std::remove_pointer_t<decltype(dT)>;
+                using T = std::remove_pointer_t<decltype(tT)>;
+                for (std::uint32_t p = cl.bucketStart[f]; p < cl.bucketStart[f + 1]; ++p) {
+                    const std::uint32_t i = cl.first[p];
+                    Real overlap;
+                    std::uint32_t otherMat;
+                    if (wall) {
+                        const auto& seg = walls.segments[cl.second[p]];
+                        const auto g = geom::diskSegmentContact({s.x[i], s.y[i]}, s.radius[i], seg.a, seg.b,
+                                                                seg.startShared, seg.endShared, seg.prevDirection);
+                        overlap = g.touching ? g.overlap : 0;
+                        otherMat = seg.material;
+                    } else {
+                        const std::uint32_t j = cl.second[p];
+                        const Real dx = s.x[j] - s.x[i], dy = s.y[j] - s.y[i];
+                        overlap = s.radius[i] + s.radius[j] - std::sqrt(dx * dx + dy * dy);
+                        otherMat = s.material[j];
+                    }
+                    if (overlap <= 0) continue;
+                    const auto law = resolve<N, D, T>(laws.laws()[static_cast<std::size_t>(s.material[i]) * nm + otherMat]);
+                    energy += dem::contactEnergy(law, overlap, cl.xi[p]);
+                }
+            });
+        }
+    };
+    eval(list.pairs, false);
+    eval(list.wallPairs, true);
+    return energy;
+}
+
+}  // namespace granulab::dem

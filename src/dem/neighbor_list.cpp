@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: MIT
+// Neighbour-list rebuild with history transfer.
+#include "dem/neighbor_list.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace granulab::dem {
+
+bool NeighborList::needsRebuild(const model::ParticleStore& s, Real skin, Real wallTravel) const noexcept {
+    if (x0.size() != s.size()) return true;
+    const Real half = 0.5 * skin - wallTravel;
+    if (half <= 0) return true;
+    const Real limit2 = half * half;
+    Real max2 = 0;
+    const std::size_t n = s.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        const Real dx = s.x[i] - x0[i], dy = s.y[i] - y0[i];
+        max2 = std::max(max2, dx * dx + dy * dy);
+    }
+    return !(max2 <= limit2);  // NaN-safe: a non-finite position forces a rebuild
+}
+
+namespace {
+
+struct OldHistory {
+    std::uint64_t key;
+    Real xi;
+    bool operator<(const OldHistory& o) const noexcept { return key < o.key; }
+};
+
+/// History entries of a list with a non-zero spring, keys mapped through oldToNew.
+std::vector<OldHistory> collectHistory(const ContactList& list, const std::vector<std::uint32_t>& oldToNew,
+                                       bool bothAreSlots) {
+    std::vector<OldHistory> out;
+    for (std::size_t k = 0; k < list.size(); ++k) {
+        if (list.xi[k] == 0) continue;
+        std::uint32_t a = list.first[k], b = list.second[k];
+        Real xi = list.xi[k];
+        if (!oldToNew.empty()) {
+            a = oldToNew[a];
+            if (bothAreSlots) {
+                b = oldToNew[b];
+                if (a > b) {  // the pair's normal and tangent flip with the order
+                    std::swap(a, b);
+                    xi = -xi;
+                }
+            }
+        }
+        out.push_back({pairKey(a, b), xi});
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+/// Buckets sorted keys by law form and restores history.
+template <class MaterialOfSecond>
+void fillList(ContactList& list, const std::vector<std::uint64_t>& keys, const std::vector<OldHistory>& old,
+              const model::ParticleStore& s, const LawTable& laws, MaterialOfSecond materialOfSecond) {
+    const std::uint32_t forms = std::max<std::uint32_t>(laws.formCount(), 1);
+    list.bucketStart.assign(forms + 1, 0);
+    std::vector<std::uint32_t> formOfKey(keys.size());
+    for (std::size_t k = 0; k < keys.size(); ++k) {
+        const std::uint32_t a = keyFirst(keys[k]);
+        const std::uint32_t f = laws.formCount() ? laws.formOf(s.material[a], materialOfSecond(keySecond(keys[k]))) : 0;
+        formOfKey[k] = f;
+        ++list.bucketStart[f + 1];
+    }
+    for (std::uint32_t f = 0; f < forms; ++f) list.bucketStart[f + 1] += list.bucketStart[f];
+    list.first.resize(keys.size());
+    list.second.resize(keys.size());
+    list.xi.assign(keys.size(), 0.0);
+    std::vector<std::uint32_t> fill(list.bucketStart.begin(), list.bucketStart.end() - 1);
+    for (std::size_t k = 0; k < keys.size(); ++k) {
+        const std::uint32_t pos = fill[formOfKey[k]]++;
+        list.first[pos] = keyFirst(keys[k]);
+        list.second[pos] = keySecond(keys[k]);
+        auto it = std::lower_bound(old.begin(), old.end(), OldHistory{keys[k], 0});
+        if (it != old.end() && it->key == keys[k]) list.xi[pos] = it->xi;
+    }
+}
+
+}  // namespace
+
+void NeighborList::rebuild(const model::ParticleStore& s, const model::WallSet& walls, Real skin, Real time,
+                           BroadPhase& broad, const LawTable& laws, const std::vector<std::uint32_t>& oldToNew) {
+    const auto oldPairs = collectHistory(pairs, oldToNew, true);
+    const auto oldWall = collectHistory(wallPairs, oldToNew, false);
+    std::vector<std::uint64_t> keys;
+    broad.findPairs(s, skin, keys);
+    fillList(pairs, keys, oldPairs, s, laws, [&](std::uint32_t j) { return s.material[j]; });
+    broad.findWallPairs(s, walls, skin, keys);
+    fillList(wallPairs, keys, oldWall, s, laws, [&](std::uint32_t seg) { return walls.segments[seg].material; });
+    x0 = s.x;
+    y0 = s.y;
+    wallTime0 = time;
+    ++builds;
+}
+
+}  // namespace granulab::dem

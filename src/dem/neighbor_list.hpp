@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: MIT
+// Verlet neighbour list with skin and per-pair contact history (DESIGN.md stages 3 and 5).
+// Candidate pairs are kept between rebuilds; history (the tangential spring) lives beside each
+// pair and is carried over at a rebuild by key, so contacts persist across rebuilds and slot
+// reorders. Pairs are bucketed by law form and sorted by (first, second) inside a bucket, which
+// fixes the force summation order (deterministic).
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "dem/broad_phase.hpp"
+#include "dem/law_table.hpp"
+#include "model/particle_store.hpp"
+#include "model/walls.hpp"
+
+namespace granulab::dem {
+
+struct ContactList {
+    std::vector<std::uint32_t> first, second;  ///< slots (pairs) or slot + segment (walls)
+    std::vector<Real> xi;                      ///< [m] tangential spring, along t = perp(n)
+    std::vector<std::uint32_t> bucketStart;    ///< formCount + 1 offsets
+
+    std::size_t size() const noexcept { return first.size(); }
+    std::size_t memoryBytes() const noexcept {
+        return first.capacity() * 4 + second.capacity() * 4 + xi.capacity() * sizeof(Real) +
+               bucketStart.capacity() * 4;
+    }
+};
+
+class NeighborList {
+public:
+    ContactList pairs;      ///< particle-particle candidates
+    ContactList wallPairs;  ///< particle-segment candidates
+    std::vector<Real> x0, y0;  ///< [m] positions at the last rebuild
+    Real wallTime0 = 0;        ///< [s] time of the last rebuild (for wall motion)
+    std::uint64_t builds = 0;
+
+    /// True if some particle may have moved into range since the last rebuild: the largest
+    /// displacement plus the wall travel exceeds skin/2 (or is not finite).
+    bool needsRebuild(const model::ParticleStore& s, Real skin, Real wallTravel) const noexcept;
+
+    /// Rebuilds both lists. `oldToNew` (may be empty) maps old slots to new ones when the store
+    /// was just permuted, so that history follows its particles.
+    void rebuild(const model::ParticleStore& s, const model::WallSet& walls, Real skin, Real time,
+                 BroadPhase& broad, const LawTable& laws, const std::vector<std::uint32_t>& oldToNew);
+
+    std::size_t memoryBytes() const noexcept {
+        return pairs.memoryBytes() + wallPairs.memoryBytes() + (x0.capacity() + y0.capacity()) * sizeof(Real);
+    }
+};
+
+}  // namespace granulab::dem

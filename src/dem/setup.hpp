@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: MIT
+// Builds the DEM world from validated *Def structs (DESIGN.md: engines are built from Defs and
+// never see scene text), and derives the contact time and the advised time step.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+#include "dem/law_table.hpp"
+#include "dem/world.hpp"
+#include "model/generate.hpp"
+#include "model/scene_def.hpp"
+
+namespace granulab::dem {
+
+/// Material names in table order (index = material id).
+std::vector<std::string> materialNames(const model::SceneDef& scene);
+
+/// Resolves the [[contact]] entries into a law per material pair; an exact pair overrides a
+/// "*" wildcard. Unknown laws, parameters and ranges go to `diags`.
+LawTable buildLawTable(const model::SceneDef& scene, Diagnostics& diags);
+
+/// Contact time and time-step limits of the stiffest, lightest contact of the scene.
+struct TimeStepAdvice {
+    Real contactTime = 0;     ///< [s] duration of a binary collision (damped linear law)
+    Real advisedDt = 0;       ///< [s] contactTime / 50
+    Real stabilityLimit = 0;  ///< [s] 2 / omega_max: velocity Verlet is unstable above it
+    std::string pair;         ///< which contact sets the limit, e.g. "grain-grain"
+};
+
+/// `usedByParticles[m]`, `usedByWalls[m]` tell which materials occur; `minMass[m]` [kg] is the
+/// lightest particle of material m.
+TimeStepAdvice adviseTimeStep(const LawTable& laws, const std::vector<std::string>& names,
+                              const std::vector<Real>& minMass, const std::vector<bool>& usedByWalls);
+
+/// Translates the scene's damping windows etc. into the engine configuration.
+WorldConfig makeWorldConfig(const model::SceneDef& scene, Real maxRadius);
+
+/// The world at t = 0 (call initialize() before stepping, or loadState()).
+World makeWorld(const model::SceneDef& scene, const model::InitialParticles& initial);
+
+}  // namespace granulab::dem

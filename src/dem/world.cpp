@@ -1,0 +1,185 @@
+// SPDX-License-Identifier: MIT
+// DEM world: the step pipeline, energies and the checkpoint state.
+#include "dem/world.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <istream>
+#include <ostream>
+#include <stdexcept>
+
+#include "core/binary_io.hpp"
+
+namespace granulab::dem {
+
+const char* stageName(Stage s) noexcept {
+    switch (s) {
+        case Stage::Predict: return "predict";
+        case Stage::Neighbors: return "neighbors";
+        case Stage::Forces: return "forces";
+        case Stage::Correct: return "correct";
+        case Stage::Updaters: return "updaters";
+        case Stage::Count: break;
+    }
+    return "?";
+}
+
+World::World(WorldConfig config, model::ParticleStore store, model::WallSet walls, LawTable laws)
+    : m_config(std::move(config)),
+      m_store(std::move(store)),
+      m_walls(std::move(walls)),
+      m_laws(std::move(laws)),
+      m_broad(makeBroadPhase(m_config.broadPhase)),
+      m_integrator(makeIntegrator(m_config.integrator)),
+      m_wallForce(m_walls.walls.size()) {
+    if (!m_broad) throw std::invalid_argument("unknown broad phase " + m_config.broadPhase);
+    if (!m_integrator) throw std::invalid_argument("unknown integrator " + m_config.integrator);
+    m_minRadius = m_store.size() ? *std::min_element(m_store.radius.begin(), m_store.radius.end()) : 0;
+}
+
+BodyForces World::bodyForcesAt(std::int64_t step) const noexcept {
+    BodyForces b;
+    b.gravity = m_config.gravity;
+    for (const auto& w : m_config.damping)
+        if (step >= w.fromStep && step < w.toStep) {
+            b.gamma += w.gamma;
+            b.gammaRotation += w.gammaRotation;
+        }
+    return b;
+}
+
+void World::rebuildNeighbors() {
+    std::vector<std::uint32_t> oldToNew;
+    const int every = m_config.sortEveryRebuilds;
+    if (every > 0 && m_list.builds % static_cast<std::uint64_t>(every) == 0) {
+        const auto order = m_broad->spatialOrder(m_store);
+        if (!order.empty()) {
+            m_store.permute(order);
+            m_integrator->permute(order);
+            oldToNew.resize(order.size());
+            for (std::size_t k = 0; k < order.size(); ++k) oldToNew[order[k]] = static_cast<std::uint32_t>(k);
+        }
+    }
+    m_list.rebuild(m_store, m_walls, m_config.skin, time(), *m_broad, m_laws, oldToNew);
+}
+
+void World::initialize() {
+    m_walls.setTime(time());
+    rebuildNeighbors();
+    // Set-up evaluation: nothing has moved yet, so no tangential displacement (drift = none).
+    computeForces(m_store, m_walls, m_list, m_laws, bodyForcesAt(m_step), DriftVelocities{}, m_config.dt, m_stats,
+                  m_wallForce);
+}
+
+std::uint32_t World::step() {
+    const Real dt = m_config.dt;
+    std::uint32_t status = kStepOk;
+    Real maxSpeed;
+    {  // 1 predict. reads: x, v, f; writes: x, v (half step)
+        ScopedStage t(m_timers, Stage::Predict);
+        maxSpeed = m_integrator->predict(m_store, dt);
+    }
+    ++m_step;
+    {  // 8 scene updaters (walls move before the forces of the new time are evaluated)
+        ScopedStage t(m_timers, Stage::Updaters);
+        m_walls.setTime(time());
+    }
+    if (!std::isfinite(maxSpeed)) status |= kStepNonFinite;
+    if (maxSpeed * dt > 0.5 * m_minRadius) status |= kStepTunnelling;
+    {  // 2+3+5 neighbour check, broad phase and history transfer when needed
+        ScopedStage t(m_timers, Stage::Neighbors);
+        const Real wallTravel = m_walls.maxDisplacement(m_list.wallTime0, time());
+        if (m_list.needsRebuild(m_store, m_config.skin, wallTravel)) rebuildNeighbors();
+    }
+    {  // 4+6 narrow phase + contact laws + body forces. reads: x, v, omega; writes: f, torque, history
+        ScopedStage t(m_timers, Stage::Forces);
+        computeForces(m_store, m_walls, m_list, m_laws, bodyForcesAt(m_step), m_integrator->driftVelocities(), dt,
+                      m_stats, m_wallForce);
+    }
+    {  // 7 correct. reads: f, torque; writes: v, omega
+        ScopedStage t(m_timers, Stage::Correct);
+        m_integrator->correct(m_store, dt);
+    }
+    if (m_stats.maxRelativeOverlap >= 1.0) status |= kStepDeepOverlap;
+    return status;
+}
+
+Energies World::energies() const noexcept {
+    Energies e;
+    const auto& s = m_store;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        e.kinetic += 0.5 * s.mass[i] * (s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i]);
+        const Real inertia = s.invInertia[i] > 0 ? 1.0 / s.invInertia[i] : 0.0;
+        e.rotational += 0.5 * inertia * s.omega[i] * s.omega[i];
+        e.potential -= s.mass[i] * (m_config.gravity.x * s.x[i] + m_config.gravity.y * s.y[i]);
+    }
+    e.elastic = contactEnergy(m_store, m_walls, m_list, m_laws);
+    return e;
+}
+
+Vec2 World::momentum() const noexcept {
+    Vec2 p;
+    for (std::size_t i = 0; i < m_store.size(); ++i) p += Vec2{m_store.vx[i], m_store.vy[i]} * m_store.mass[i];
+    return p;
+}
+
+std::size_t World::memoryBytes() const noexcept {
+    return m_store.size() * model::ParticleStore::kBytesPerParticle + m_list.memoryBytes() + m_broad->memoryBytes();
+}
+
+namespace {
+constexpr std::uint64_t kStateMagic = 0x31454d44424c4e47ULL;  // "GNLBDME1"
+
+void writeList(std::ostream& os, const ContactList& l) {
+    writeVector(os, l.first);
+    writeVector(os, l.second);
+    writeVector(os, l.xi);
+    writeVector(os, l.bucketStart);
+}
+void readList(std::istream& is, ContactList& l) {
+    readVector(is, l.first);
+    readVector(is, l.second);
+    readVector(is, l.xi);
+    readVector(is, l.bucketStart);
+}
+}  // namespace
+
+void World::saveState(std::ostream& os) const {
+    writePod(os, kStateMagic);
+    writePod<std::int64_t>(os, m_step);
+    const auto& s = m_store;
+    for (const auto* col : {&s.x, &s.y, &s.vx, &s.vy, &s.angle, &s.omega, &s.fx, &s.fy, &s.torque, &s.radius,
+                            &s.mass, &s.invMass, &s.invInertia})
+        writeVector(os, *col);
+    writeVector(os, s.material);
+    writeVector(os, s.id);
+    writeList(os, m_list.pairs);
+    writeList(os, m_list.wallPairs);
+    writeVector(os, m_list.x0);
+    writeVector(os, m_list.y0);
+    writePod(os, m_list.wallTime0);
+    writePod(os, m_list.builds);
+}
+
+void World::loadState(std::istream& is) {
+    if (readPod<std::uint64_t>(is) != kStateMagic) throw std::runtime_error("not a granulab DEM checkpoint");
+    m_step = readPod<std::int64_t>(is);
+    auto& s = m_store;
+    for (auto* col : {&s.x, &s.y, &s.vx, &s.vy, &s.angle, &s.omega, &s.fx, &s.fy, &s.torque, &s.radius, &s.mass,
+                      &s.invMass, &s.invInertia})
+        readVector(is, *col);
+    readVector(is, s.material);
+    readVector(is, s.id);
+    readList(is, m_list.pairs);
+    readList(is, m_list.wallPairs);
+    readVector(is, m_list.x0);
+    readVector(is, m_list.y0);
+    m_list.wallTime0 = readPod<Real>(is);
+    m_list.builds = readPod<std::uint64_t>(is);
+    m_walls.setTime(time());
+    m_minRadius = s.size() ? *std::min_element(s.radius.begin(), s.radius.end()) : 0;
+    // Wall forces of the restored step are re-derived at the next step; stats start empty.
+    m_stats = ForceStats{};
+}
+
+}  // namespace granulab::dem

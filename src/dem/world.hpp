@@ -1,0 +1,110 @@
+// SPDX-License-Identifier: MIT
+// The DEM world and its straight-line step (DESIGN.md "The DEM step"), each stage timed.
+// Stages 1 predict, 2+3 neighbour check/rebuild (geometry, broad phase, history sync),
+// 4+6 forces (narrow phase fused with the laws), 7 correct, 8 scene updaters (moving walls).
+// Stage 9 (observers) runs in the caller, which owns all I/O.
+#pragma once
+#include <cstdint>
+#include <iosfwd>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/timer.hpp"
+#include "dem/broad_phase.hpp"
+#include "dem/forces.hpp"
+#include "dem/integrator.hpp"
+#include "dem/law_table.hpp"
+#include "dem/neighbor_list.hpp"
+#include "model/particle_store.hpp"
+#include "model/walls.hpp"
+
+namespace granulab::dem {
+
+enum class Stage { Predict, Neighbors, Forces, Correct, Updaters, Count };
+const char* stageName(Stage s) noexcept;
+
+/// Global viscous damping active for steps with fromStep <= step < toStep.
+struct DampingWindow {
+    Real gamma = 0, gammaRotation = 0;
+    std::int64_t fromStep = 0, toStep = 0;
+};
+
+struct WorldConfig {
+    Real dt = 0;                      ///< [s]
+    Vec2 gravity;                     ///< [m/s^2]
+    std::vector<DampingWindow> damping;
+    Real skin = 0;                    ///< [m] neighbour-list skin
+    int sortEveryRebuilds = 16;       ///< spatial re-sort of slots every k-th rebuild (0: never)
+    std::string integrator = "verlet";
+    std::string broadPhase = "cell_grid";
+};
+
+/// Bit flags returned by World::step (STYLE.md: step() never throws).
+enum StepStatus : std::uint32_t {
+    kStepOk = 0,
+    kStepNonFinite = 1u << 0,    ///< NaN or infinity in the particle state
+    kStepTunnelling = 1u << 1,   ///< a particle moved more than half its radius in one step
+    kStepDeepOverlap = 1u << 2,  ///< an overlap reached the smaller radius
+};
+
+struct Energies {
+    Real kinetic = 0;     ///< [J] translational
+    Real rotational = 0;  ///< [J]
+    Real potential = 0;   ///< [J] gravitational, -m g . x
+    Real elastic = 0;     ///< [J] stored in contact springs
+    Real total() const noexcept { return kinetic + rotational + potential + elastic; }
+};
+
+class World {
+public:
+    World(WorldConfig config, model::ParticleStore store, model::WallSet walls, LawTable laws);
+
+    /// First neighbour build and force evaluation (skipped after loadState).
+    void initialize();
+    /// Advances one step; returns StepStatus flags.
+    std::uint32_t step();
+
+    std::int64_t stepIndex() const noexcept { return m_step; }
+    Real time() const noexcept { return static_cast<Real>(m_step) * m_config.dt; }
+    const WorldConfig& config() const noexcept { return m_config; }
+    const model::ParticleStore& store() const noexcept { return m_store; }
+    const model::WallSet& walls() const noexcept { return m_walls; }
+    const NeighborList& neighbors() const noexcept { return m_list; }
+    const LawTable& laws() const noexcept { return m_laws; }
+    const ForceStats& forceStats() const noexcept { return m_stats; }
+    /// Total contact force [N] on each wall at the last force evaluation.
+    const std::vector<Vec2>& wallForce() const noexcept { return m_wallForce; }
+    const StageTimers<Stage>& timers() const noexcept { return m_timers; }
+    const char* broadPhaseName() const noexcept { return m_broad->name(); }
+    const char* integratorName() const noexcept { return m_integrator->name(); }
+
+    Energies energies() const noexcept;
+    /// Total linear momentum [kg m/s].
+    Vec2 momentum() const noexcept;
+    /// Bytes held by the engine (store, neighbour list, broad phase).
+    std::size_t memoryBytes() const noexcept;
+
+    /// Complete dynamic state for a bit-for-bit resume.
+    void saveState(std::ostream& os) const;
+    void loadState(std::istream& is);
+
+private:
+    void rebuildNeighbors();
+    BodyForces bodyForcesAt(std::int64_t step) const noexcept;
+
+    WorldConfig m_config;
+    model::ParticleStore m_store;
+    model::WallSet m_walls;
+    LawTable m_laws;
+    std::unique_ptr<BroadPhase> m_broad;
+    std::unique_ptr<Integrator> m_integrator;
+    NeighborList m_list;
+    ForceStats m_stats;
+    std::vector<Vec2> m_wallForce;
+    StageTimers<Stage> m_timers;
+    std::int64_t m_step = 0;
+    Real m_minRadius = 0;
+};
+
+}  // namespace granulab::dem

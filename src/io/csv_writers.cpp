@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: MIT
+// series.csv and final.csv writers.
+#include "io/csv_writers.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <fmt/format.h>
+#include <fstream>
+#include <numeric>
+#include <sstream>
+#include <stdexcept>
+
+namespace granulab::io {
+
+SeriesWriter::SeriesWriter(const std::string& path, std::vector<std::string> columns, double resumeTime)
+    : m_columns(columns.size()) {
+    std::string kept;
+    if (resumeTime >= 0) {
+        std::ifstream in(path);
+        std::string line;
+        bool header = true;
+        while (std::getline(in, line)) {
+            if (header) {
+                header = false;
+                continue;
+            }
+            const double t = std::strtod(line.c_str(), nullptr);
+            if (t <= resumeTime) kept += line + "\n";
+        }
+    }
+    m_file = std::fopen(path.c_str(), "w");
+    if (!m_file) throw std::runtime_error("cannot write " + path);
+    std::string header;
+    for (std::size_t k = 0; k < columns.size(); ++k) header += (k ? "," : "") + columns[k];
+    std::fputs((header + "\n" + kept).c_str(), m_file);
+}
+
+SeriesWriter::~SeriesWriter() {
+    if (m_file) std::fclose(m_file);
+}
+
+void SeriesWriter::row(const std::vector<double>& values) {
+    std::string line;
+    for (std::size_t k = 0; k < values.size() && k < m_columns; ++k) line += fmt::format("{}{:.17g}", k ? "," : "", values[k]);
+    line += "\n";
+    std::fputs(line.c_str(), m_file);
+}
+
+void SeriesWriter::flush() { std::fflush(m_file); }
+
+void writeFinalCsv(const std::string& path, const model::ParticleStore& s, const std::vector<std::string>& materialNames) {
+    std::vector<std::size_t> order(s.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return s.id[a] < s.id[b]; });
+    std::string text = "id,shape,x,y,vx,vy,angle,omega,radius,mass,material\n";
+    for (const std::size_t i : order)
+        text += fmt::format("{},disk,{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{}\n", s.id[i], s.x[i],
+                            s.y[i], s.vx[i], s.vy[i], s.angle[i], s.omega[i], s.radius[i], s.mass[i],
+                            s.material[i] < materialNames.size() ? materialNames[s.material[i]] : "?");
+    writeFileAtomically(path, text);
+}
+
+void writeFileAtomically(const std::string& path, const std::string& text) {
+    const std::string tmp = path + ".tmp";
+    {
+        std::ofstream out(tmp, std::ios::binary);
+        if (!out) throw std::runtime_error("cannot write " + tmp);
+        out << text;
+        if (!out) throw std::runtime_error("write failed: " + tmp);
+    }
+    std::filesystem::rename(tmp, path);
+}
+
+}  // namespace granulab::io

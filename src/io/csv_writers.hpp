@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: MIT
+// CSV outputs of the user contract (DESIGN.md "Contract"): series.csv (one row per output
+// time) and final.csv (one row per particle). Numbers are written with 17 significant digits,
+// so a resumed run can be compared byte for byte.
+#pragma once
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "model/particle_store.hpp"
+
+namespace granulab::io {
+
+/// Appends rows to series.csv; the header is fixed at construction.
+class SeriesWriter {
+public:
+    /// Opens `path`. If `resumeTime` >= 0 the existing file is kept up to rows with
+    /// time <= resumeTime (a resumed run continues it); otherwise it is truncated.
+    SeriesWriter(const std::string& path, std::vector<std::string> columns, double resumeTime = -1);
+    ~SeriesWriter();
+    SeriesWriter(const SeriesWriter&) = delete;
+    SeriesWriter& operator=(const SeriesWriter&) = delete;
+
+    void row(const std::vector<double>& values);
+    void flush();
+
+private:
+    std::FILE* m_file = nullptr;
+    std::size_t m_columns = 0;
+};
+
+/// id, shape, x, y, vx, vy, angle, omega, radius, mass, material; sorted by id.
+void writeFinalCsv(const std::string& path, const model::ParticleStore& s,
+                   const std::vector<std::string>& materialNames);
+
+/// Writes `text` to `path` through a temporary file and a rename (never a half-written file).
+void writeFileAtomically(const std::string& path, const std::string& text);
+
+}  // namespace granulab::io

@@ -1,0 +1,536 @@
+// SPDX-License-Identifier: MIT
+// TOML scene reader. Every table is read through a TableReader that remembers which keys it
+// consumed, so that anything left over is reported as an unknown key with a hint.
+#include "io/scene_reader.hpp"
+
+#include <cmath>
+#include <fmt/format.h>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <toml++/toml.h>
+
+#include "core/suggest.hpp"
+
+namespace granulab::io {
+
+namespace {
+
+using model::SceneDef;
+
+/// Location of a node; nodes inserted by --set have no source and are named by their key.
+SourceLoc locOf(const toml::node& node, const std::string& file) {
+    const auto& src = node.source();
+    if (src.begin.line == 0) return {"--set", 0, 0};
+    return {file, static_cast<int>(src.begin.line), static_cast<int>(src.begin.column)};
+}
+
+std::string typeName(const toml::node& n) {
+    switch (n.type()) {
+        case toml::node_type::table: return "a table";
+        case toml::node_type::array: return "an array";
+        case toml::node_type::string: return "a string";
+        case toml::node_type::integer: return "an integer";
+        case toml::node_type::floating_point: return "a number";
+        case toml::node_type::boolean: return "a boolean";
+        default: return "a date/time";
+    }
+}
+
+class TableReader {
+public:
+    TableReader(const toml::table& table, std::string path, const std::string& file, Diagnostics& diags)
+        : m_table(table), m_path(std::move(path)), m_file(file), m_diags(diags) {}
+
+    SourceLoc loc() const { return locOf(m_table, m_file); }
+    std::string keyPath(const std::string& key) const { return m_path.empty() ? key : m_path + "." + key; }
+    const std::string& file() const { return m_file; }
+    Diagnostics& diags() { return m_diags; }
+
+    /// Marks a key as known and returns its node (nullptr if absent).
+    const toml::node* node(const std::string& key) {
+        m_known.push_back(key);
+        return m_table.get(key);
+    }
+
+    void typeError(const std::string& key, const toml::node& n, const std::string& expected) {
+        m_diags.error(locOf(n, m_file), keyPath(key), fmt::format("expected {}, got {}", expected, typeName(n)));
+    }
+
+    bool number(const std::string& key, Real& out) {
+        const toml::node* n = node(key);
+        if (!n) return false;
+        if (!n->is_number()) {
+            typeError(key, *n, "a number");
+            return false;
+        }
+        const Real v = n->value<double>().value_or(0.0);
+        if (!std::isfinite(v)) {
+            m_diags.error(locOf(*n, m_file), keyPath(key), fmt::format("must be a finite number, got {}", v));
+            return false;
+        }
+        out = v;
+        return true;
+    }
+
+    bool integer(const std::string& key, std::int64_t& out) {
+        const toml::node* n = node(key);
+        if (!n) return false;
+        if (!n->is_integer()) {
+            typeError(key, *n, "an integer");
+            return false;
+        }
+        out = n->value<std::int64_t>().value_or(0);
+        return true;
+    }
+
+    bool boolean(const std::string& key, bool& out) {
+        const toml::node* n = node(key);
+        if (!n) return false;
+        if (!n->is_boolean()) {
+            typeError(key, *n, "true or false");
+            return false;
+        }
+        out = n->value<bool>().value_or(false);
+        return true;
+    }
+
+    bool string(const std::string& key, std::string& out) {
+        const toml::node* n = node(key);
+        if (!n) return false;
+        if (!n->is_string()) {
+            typeError(key, *n, "a string");
+            return false;
+        }
+        out = n->value<std::string>().value_or("");
+        return true;
+    }
+
+    /// A string that must be one of `allowed`.
+    bool choice(const std::string& key, std::string& out, const std::vector<std::string>& allowed) {
+        std::string v;
+        if (!string(key, v)) return false;
+        for (const auto& a : allowed)
+            if (a == v) {
+                out = v;
+                return true;
+            }
+        m_diags.error(locOf(*m_table.get(key), m_file), keyPath(key),
+                      fmt::format("'{}' is not allowed{}; allowed: {}", v, didYouMean(v, allowed), joinList(allowed)));
+        return false;
+    }
+
+    /// Array of `count` finite numbers.
+    bool numbers(const std::string& key, std::vector<Real>& out, std::size_t count) {
+        const toml::node* n = node(key);
+        if (!n) return false;
+        const toml::array* a = n->as_array();
+        if (!a || a->size() != count) {
+            m_diags.error(locOf(*n, m_file), keyPath(key), fmt::format("expected an array of {} numbers", count));
+            return false;
+        }
+        out.clear();
+        for (const auto& e : *a) {
+            const auto v = e.value<double>();
+            if (!e.is_number() || !v || !std::isfinite(*v)) {
+                m_diags.error(locOf(e, m_file), keyPath(key), "expected finite numbers in the array");
+                return false;
+            }
+            out.push_back(*v);
+        }
+        return true;
+    }
+
+    bool vec2(const std::string& key, Vec2& out) {
+        std::vector<Real> v;
+        if (!numbers(key, v, 2)) return false;
+        out = {v[0], v[1]};
+        return true;
+    }
+
+    /// Reports keys that were never asked for.
+    void finish() {
+        for (auto&& [k, v] : m_table) {
+            const std::string key(k.str());
+            bool known = false;
+            for (const auto& kk : m_known) known = known || kk == key;
+            if (!known)
+                m_diags.error(locOf(v, m_file), keyPath(key),
+                              fmt::format("unknown key{}; allowed here: {}", didYouMean(key, m_known),
+                                          joinList(m_known)));
+        }
+    }
+
+    const toml::table& table() const { return m_table; }
+
+private:
+    const toml::table& m_table;
+    std::string m_path;
+    const std::string& m_file;
+    Diagnostics& m_diags;
+    std::vector<std::string> m_known;
+};
+
+/// Calls fn(reader, index) for every table of an array of tables `key` of `root`.
+template <class Fn>
+void forEachTable(TableReader& root, const std::string& key, Fn&& fn) {
+    const toml::node* n = root.node(key);
+    if (!n) return;
+    const toml::array* arr = n->as_array();
+    if (!arr) {
+        root.typeError(key, *n, "an array of tables ([[" + key + "]])");
+        return;
+    }
+    for (std::size_t k = 0; k < arr->size(); ++k) {
+        const toml::table* t = (*arr)[k].as_table();
+        if (!t) {
+            root.typeError(key, (*arr)[k], "a table");
+            continue;
+        }
+        TableReader r(*t, fmt::format("{}[{}]", key, k), root.file(), root.diags());
+        fn(r, k);
+        r.finish();
+    }
+}
+
+/// Optional sub-table; calls fn(reader) when present.
+template <class Fn>
+void withTable(TableReader& root, const std::string& key, Fn&& fn) {
+    const toml::node* n = root.node(key);
+    if (!n) return;
+    const toml::table* t = n->as_table();
+    if (!t) {
+        root.typeError(key, *n, "a table");
+        return;
+    }
+    TableReader r(*t, root.keyPath(key), root.file(), root.diags());
+    fn(r);
+    r.finish();
+}
+
+void readRun(TableReader& r, model::RunDef& run) {
+    run.loc = r.loc();
+    r.choice("engine", run.engine, {"dem", "edmd"});
+    std::int64_t dim = run.dimension;
+    if (r.integer("dimension", dim)) run.dimension = static_cast<int>(dim);
+    std::int64_t seed = static_cast<std::int64_t>(run.seed);
+    if (r.integer("seed", seed)) run.seed = static_cast<std::uint64_t>(seed);
+    r.number("end_time", run.endTime);
+    r.number("benchmark_from", run.benchmarkFrom);
+    r.string("title", run.title);
+}
+
+void readDem(TableReader& r, model::DemDef& dem) {
+    dem.loc = r.loc();
+    r.number("dt", dem.dt);
+    r.string("integrator", dem.integrator);
+    r.string("broad_phase", dem.broadPhase);
+    r.number("skin", dem.skin);
+    r.string("mass_model", dem.massModel);
+    r.vec2("gravity", dem.gravity);
+    forEachTable(r, "damping", [&](TableReader& d, std::size_t) {
+        model::DampingWindowDef w;
+        w.loc = d.loc();
+        d.number("gamma", w.gamma);
+        d.number("gamma_rotation", w.gammaRotation);
+        d.number("from", w.from);
+        d.number("to", w.to);
+        dem.damping.push_back(w);
+    });
+}
+
+void readSize(TableReader& parent, const std::string& key, model::SizeDistDef& size) {
+    const toml::node* n = parent.node(key);
+    if (!n) return;
+    size.loc = locOf(*n, parent.file());
+    if (n->is_number()) {
+        size.kind = model::SizeDistDef::Kind::Constant;
+        parent.number(key, size.value);
+        return;
+    }
+    const toml::table* t = n->as_table();
+    if (!t) {
+        parent.typeError(key, *n, "a number or a table { distribution = ..., ... }");
+        return;
+    }
+    TableReader r(*t, parent.keyPath(key), parent.file(), parent.diags());
+    std::string dist = "constant";
+    r.choice("distribution", dist, {"constant", "uniform", "gaussian"});
+    if (dist == "constant") {
+        size.kind = model::SizeDistDef::Kind::Constant;
+        r.number("value", size.value);
+    } else if (dist == "uniform") {
+        size.kind = model::SizeDistDef::Kind::Uniform;
+        r.number("min", size.min);
+        r.number("max", size.max);
+    } else {
+        size.kind = model::SizeDistDef::Kind::Gaussian;
+        r.number("mean", size.mean);
+        r.number("sigma", size.sigma);
+        r.number("min", size.min);
+        r.number("max", size.max);
+    }
+    r.finish();
+}
+
+void readContact(TableReader& r, model::ContactDef& c) {
+    c.loc = r.loc();
+    const toml::node* n = r.node("materials");
+    if (!n) {
+        r.diags().error(c.loc, r.keyPath("materials"), "missing: the two material names, e.g. [\"grain\", \"wall\"] (\"*\" matches any)");
+    } else {
+        const toml::array* a = n->as_array();
+        if (!a || a->size() != 2 || !(*a)[0].is_string() || !(*a)[1].is_string()) {
+            r.typeError("materials", *n, "an array of two material names");
+        } else {
+            c.materialA = (*a)[0].value<std::string>().value_or("");
+            c.materialB = (*a)[1].value<std::string>().value_or("");
+        }
+    }
+    r.string("normal", c.normal);
+    r.string("damping", c.damping);
+    r.string("tangential", c.tangential);
+    // Every other key is a law parameter, checked against the law registry by validate().
+    for (auto&& [k, v] : r.table()) {
+        const std::string key(k.str());
+        if (key == "materials" || key == "normal" || key == "damping" || key == "tangential") continue;
+        r.node(key);
+        model::LawParamDef p;
+        p.loc = locOf(v, r.file());
+        if (v.is_boolean()) {
+            p.value = v.value<bool>().value_or(false) ? 1.0 : 0.0;
+        } else if (v.is_number()) {
+            p.value = v.value<double>().value_or(0.0);
+            if (!std::isfinite(p.value)) {
+                r.diags().error(p.loc, r.keyPath(key), fmt::format("must be a finite number, got {}", p.value));
+                continue;
+            }
+        } else {
+            r.typeError(key, v, "a number or a boolean");
+            continue;
+        }
+        c.params[key] = p;
+    }
+}
+
+void readParticle(TableReader& r, model::ParticleDef& p) {
+    p.loc = r.loc();
+    r.string("shape", p.shape);
+    if (!r.vec2("position", p.position) && !r.table().get("position"))
+        r.diags().error(p.loc, r.keyPath("position"), "missing: [x, y] in m");
+    r.vec2("velocity", p.velocity);
+    r.number("angle", p.angle);
+    r.number("omega", p.omega);
+    if (!r.number("radius", p.radius) && !r.table().get("radius"))
+        r.diags().error(p.loc, r.keyPath("radius"), "missing: radius in m, allowed (0, inf)");
+    r.string("material", p.material);
+}
+
+void readBlock(TableReader& r, model::BlockDef& b) {
+    b.loc = r.loc();
+    std::string lattice = "hexagonal";
+    r.choice("lattice", lattice, {"hexagonal", "square", "random"});
+    b.lattice = lattice == "hexagonal" ? model::BlockDef::Lattice::Hexagonal
+                : lattice == "square"  ? model::BlockDef::Lattice::Square
+                                       : model::BlockDef::Lattice::Random;
+    r.string("shape", b.shape);
+    std::vector<Real> region;
+    if (r.numbers("region", region, 4)) {
+        b.xmin = region[0];
+        b.ymin = region[1];
+        b.xmax = region[2];
+        b.ymax = region[3];
+    } else if (!r.table().get("region")) {
+        r.diags().error(b.loc, r.keyPath("region"), "missing: [xmin, ymin, xmax, ymax] in m");
+    }
+    r.number("spacing", b.spacing);
+    Vec2 origin;
+    if (r.vec2("origin", origin)) b.origin = origin;
+    r.integer("count", b.count);
+    readSize(r, "radius", b.radius);
+    if (!r.table().get("radius")) r.diags().error(b.loc, r.keyPath("radius"), "missing: radius in m or a distribution table");
+    r.string("material", b.material);
+    r.vec2("velocity", b.velocity);
+    r.number("temperature", b.temperature);
+}
+
+void readWall(TableReader& r, model::WallDef& w) {
+    w.loc = r.loc();
+    r.string("name", w.name);
+    const toml::node* n = r.node("points");
+    if (!n) {
+        r.diags().error(w.loc, r.keyPath("points"), "missing: [[x0, y0], [x1, y1], ...] in m");
+    } else if (const toml::array* a = n->as_array()) {
+        for (const auto& e : *a) {
+            const toml::array* pt = e.as_array();
+            if (!pt || pt->size() != 2 || !(*pt)[0].is_number() || !(*pt)[1].is_number()) {
+                r.diags().error(locOf(e, r.file()), r.keyPath("points"), "each point must be [x, y] in m");
+                continue;
+            }
+            const Real x = (*pt)[0].value<double>().value_or(0), y = (*pt)[1].value<double>().value_or(0);
+            if (!std::isfinite(x) || !std::isfinite(y)) {
+                r.diags().error(locOf(e, r.file()), r.keyPath("points"), "points must be finite");
+                continue;
+            }
+            w.points.push_back({x, y});
+        }
+    } else {
+        r.typeError("points", *n, "an array of [x, y] points");
+    }
+    r.boolean("closed", w.closed);
+    r.string("material", w.material);
+    r.vec2("velocity", w.velocity);
+}
+
+void readOutput(TableReader& r, model::OutputDef& o) {
+    o.loc = r.loc();
+    r.number("snapshot_interval", o.snapshotInterval);
+    r.number("series_interval", o.seriesInterval);
+    r.number("checkpoint_interval", o.checkpointInterval);
+    r.boolean("vtk", o.vtk);
+}
+
+/// Splits "a.b[2].c" into segments {"a", "b", "[2]", "c"}.
+std::vector<std::string> splitPath(const std::string& key) {
+    std::vector<std::string> parts;
+    std::string cur;
+    for (std::size_t k = 0; k < key.size(); ++k) {
+        const char ch = key[k];
+        if (ch == '.') {
+            if (!cur.empty()) parts.push_back(cur);
+            cur.clear();
+        } else if (ch == '[') {
+            if (!cur.empty()) parts.push_back(cur);
+            cur = "[";
+        } else if (ch == ']') {
+            parts.push_back(cur + "]");
+            cur.clear();
+        } else {
+            cur += ch;
+        }
+    }
+    if (!cur.empty()) parts.push_back(cur);
+    return parts;
+}
+
+void applyOverride(toml::table& root, const Override& ov, Diagnostics& diags) {
+    const SourceLoc loc{"--set " + ov.key, 0, 0};
+    const auto parts = splitPath(ov.key);
+    if (parts.empty() || parts.back().front() == '[') {
+        diags.error(loc, ov.key, "malformed key; expected section.key or section[index].key");
+        return;
+    }
+    toml::node* cur = &root;
+    for (std::size_t k = 0; k + 1 < parts.size(); ++k) {
+        const std::string& part = parts[k];
+        if (part.front() == '[') {
+            toml::array* arr = cur->as_array();
+            std::size_t idx = 0;
+            try {
+                idx = std::stoul(part.substr(1, part.size() - 2));
+            } catch (...) {
+                diags.error(loc, ov.key, "array index must be a number");
+                return;
+            }
+            if (!arr || idx >= arr->size()) {
+                diags.error(loc, ov.key, fmt::format("no element {} to override", part));
+                return;
+            }
+            cur = arr->get(idx);
+        } else {
+            toml::table* t = cur->as_table();
+            if (!t) {
+                diags.error(loc, ov.key, fmt::format("'{}' is not inside a table", part));
+                return;
+            }
+            if (!t->get(part)) t->insert(part, toml::table{});
+            cur = t->get(part);
+        }
+    }
+    toml::table* target = cur->as_table();
+    if (!target) {
+        diags.error(loc, ov.key, "the parent of the key is not a table");
+        return;
+    }
+    toml::table parsed;
+    try {
+        parsed = toml::parse("v = " + ov.value);
+    } catch (const toml::parse_error&) {
+        parsed = toml::table{};
+        parsed.insert("v", ov.value);  // bare word: a string
+    }
+    target->insert_or_assign(parts.back(), *parsed.get("v"));
+}
+
+SceneDef buildScene(toml::table& root, const std::string& path, const std::vector<Override>& overrides) {
+    Diagnostics diags;
+    for (const auto& ov : overrides) applyOverride(root, ov, diags);
+    SceneDef scene;
+    scene.path = path;
+    TableReader r(root, "", path, diags);
+    withTable(r, "run", [&](TableReader& t) { readRun(t, scene.run); });
+    if (!root.get("run")) diags.error({path, 1, 1}, "run", "missing section [run] (needs at least end_time)");
+    withTable(r, "dem", [&](TableReader& t) { readDem(t, scene.dem); });
+    forEachTable(r, "material", [&](TableReader& t, std::size_t) {
+        model::MaterialDef m;
+        m.loc = t.loc();
+        if (!t.string("name", m.name) && !t.table().get("name")) diags.error(m.loc, t.keyPath("name"), "missing: material name");
+        t.number("density", m.density);
+        scene.materials.push_back(m);
+    });
+    forEachTable(r, "contact", [&](TableReader& t, std::size_t) {
+        model::ContactDef c;
+        readContact(t, c);
+        scene.contacts.push_back(c);
+    });
+    forEachTable(r, "particle", [&](TableReader& t, std::size_t) {
+        model::ParticleDef p;
+        readParticle(t, p);
+        scene.particles.push_back(p);
+    });
+    forEachTable(r, "block", [&](TableReader& t, std::size_t) {
+        model::BlockDef b;
+        readBlock(t, b);
+        scene.blocks.push_back(b);
+    });
+    forEachTable(r, "wall", [&](TableReader& t, std::size_t) {
+        model::WallDef w;
+        readWall(t, w);
+        scene.walls.push_back(w);
+    });
+    withTable(r, "output", [&](TableReader& t) { readOutput(t, scene.output); });
+    r.finish();
+    diags.throwIfAny();
+    return scene;
+}
+
+}  // namespace
+
+Override parseOverride(const std::string& text) {
+    const auto eq = text.find('=');
+    if (eq == std::string::npos || eq == 0 || eq + 1 == text.size())
+        throw SceneError(makeDiagnostic("--set", 0, text, "expected key=value, e.g. --set dem.dt=1e-5"));
+    return {text.substr(0, eq), text.substr(eq + 1)};
+}
+
+SceneDef readSceneText(const std::string& text, const std::string& path, const std::vector<Override>& overrides) {
+    toml::table root;
+    try {
+        root = toml::parse(text, path);
+    } catch (const toml::parse_error& e) {
+        const auto& b = e.source().begin;
+        throw SceneError(makeDiagnostic(path, static_cast<int>(b.line), "",
+                                        fmt::format("syntax error: {}", e.description())));
+    }
+    return buildScene(root, path, overrides);
+}
+
+SceneDef readScene(const std::string& path, const std::vector<Override>& overrides) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw SceneError(makeDiagnostic(path, 0, "", "cannot open scene file (missing or unreadable)"));
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    return readSceneText(ss.str(), path, overrides);
+}
+
+}  // namespace granulab::io

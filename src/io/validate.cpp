@@ -1,0 +1,223 @@
+// SPDX-License-Identifier: MIT
+// Scene validation: static checks, law table, generation, overlaps, time step.
+#include "io/validate.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <map>
+
+#include "core/suggest.hpp"
+#include "dem/broad_phase.hpp"
+#include "dem/integrator.hpp"
+
+namespace granulab::io {
+
+namespace {
+
+class Checker {
+public:
+    explicit Checker(Diagnostics& d) : m_diags(d) {}
+
+    void positive(const SourceLoc& loc, const std::string& key, Real v, const std::string& unit) {
+        if (!(v > 0) || !std::isfinite(v))
+            m_diags.error(loc, key, fmt::format("must be > 0 [{}], got {}; allowed (0, inf)", unit, v));
+    }
+    void nonNegative(const SourceLoc& loc, const std::string& key, Real v, const std::string& unit) {
+        if (!(v >= 0) || !std::isfinite(v))
+            m_diags.error(loc, key, fmt::format("must be >= 0 [{}], got {}; allowed [0, inf)", unit, v));
+    }
+    void material(const SourceLoc& loc, const std::string& key, const std::string& name,
+                  const std::vector<std::string>& names) {
+        if (name.empty()) {
+            m_diags.error(loc, key, fmt::format("missing material; defined: {}", joinList(names)));
+        } else if (std::find(names.begin(), names.end(), name) == names.end()) {
+            m_diags.error(loc, key, fmt::format("unknown material '{}'{}; defined: {}", name, didYouMean(name, names),
+                                                joinList(names)));
+        }
+    }
+    void oneOf(const SourceLoc& loc, const std::string& key, const std::string& v, const std::vector<std::string>& allowed) {
+        if (std::find(allowed.begin(), allowed.end(), v) == allowed.end())
+            m_diags.error(loc, key, fmt::format("'{}' is not allowed{}; allowed: {}", v, didYouMean(v, allowed), joinList(allowed)));
+    }
+    Diagnostics& diags() { return m_diags; }
+
+private:
+    Diagnostics& m_diags;
+};
+
+void checkSize(Checker& c, const model::SizeDistDef& s, const SourceLoc& loc, const std::string& key) {
+    using K = model::SizeDistDef::Kind;
+    if (s.kind == K::Constant) {
+        c.positive(loc, key, s.value, "m");
+        return;
+    }
+    c.positive(loc, key + ".min", s.min, "m");
+    if (!(s.max >= s.min))
+        c.diags().error(loc, key + ".max", fmt::format("max ({}) must be >= min ({})", s.max, s.min));
+    if (s.kind == K::Gaussian) {
+        c.positive(loc, key + ".sigma", s.sigma, "m");
+        if (!(s.mean >= s.min && s.mean <= s.max))
+            c.diags().error(loc, key + ".mean", fmt::format("mean {} must lie in [min, max] = [{}, {}]", s.mean, s.min, s.max));
+    }
+}
+
+void checkStatic(const model::SceneDef& sc, Checker& c, const std::vector<std::string>& names) {
+    auto& d = c.diags();
+    if (sc.run.engine != "dem")
+        d.error(sc.run.loc, "run.engine", fmt::format("engine '{}' is not available in this version; allowed: dem", sc.run.engine));
+    if (sc.run.dimension != 2)
+        d.error(sc.run.loc, "run.dimension", fmt::format("the dem engine is two-dimensional; allowed: 2, got {}", sc.run.dimension));
+    c.positive(sc.run.loc, "run.end_time", sc.run.endTime, "s");
+    c.positive(sc.dem.loc.file.empty() ? sc.run.loc : sc.dem.loc, "dem.dt", sc.dem.dt, "s");
+    if (sc.dem.dt > 0 && sc.run.endTime > 0 && sc.dem.dt > sc.run.endTime)
+        d.error(sc.dem.loc, "dem.dt", fmt::format("dt = {} s exceeds run.end_time = {} s", sc.dem.dt, sc.run.endTime));
+    c.oneOf(sc.dem.loc, "dem.integrator", sc.dem.integrator, dem::integratorNames());
+    c.oneOf(sc.dem.loc, "dem.broad_phase", sc.dem.broadPhase, dem::broadPhaseNames());
+    c.oneOf(sc.dem.loc, "dem.mass_model", sc.dem.massModel, {"disk"});
+    if (sc.dem.skin != -1) c.nonNegative(sc.dem.loc, "dem.skin", sc.dem.skin, "m");
+    for (std::size_t k = 0; k < sc.dem.damping.size(); ++k) {
+        const auto& w = sc.dem.damping[k];
+        const std::string key = fmt::format("dem.damping[{}]", k);
+        c.nonNegative(w.loc, key + ".gamma", w.gamma, "kg/s");
+        c.nonNegative(w.loc, key + ".gamma_rotation", w.gammaRotation, "kg m^2/s");
+        if (!(w.to > w.from)) d.error(w.loc, key, fmt::format("window must have to > from, got [{}, {})", w.from, w.to));
+    }
+    for (std::size_t k = 0; k < sc.materials.size(); ++k) {
+        const auto& m = sc.materials[k];
+        for (std::size_t j = 0; j < k; ++j)
+            if (sc.materials[j].name == m.name)
+                d.error(m.loc, fmt::format("material[{}].name", k), fmt::format("duplicate material name '{}'", m.name));
+    }
+    for (std::size_t k = 0; k < sc.particles.size(); ++k) {
+        const auto& p = sc.particles[k];
+        const std::string key = fmt::format("particle[{}]", k);
+        c.oneOf(p.loc, key + ".shape", p.shape, {"disk"});
+        c.positive(p.loc, key + ".radius", p.radius, "m");
+        c.material(p.loc, key + ".material", p.material, names);
+    }
+    for (std::size_t k = 0; k < sc.blocks.size(); ++k) {
+        const auto& b = sc.blocks[k];
+        const std::string key = fmt::format("block[{}]", k);
+        c.oneOf(b.loc, key + ".shape", b.shape, {"disk"});
+        if (!(b.xmax > b.xmin) || !(b.ymax > b.ymin))
+            d.error(b.loc, key + ".region", fmt::format("region [{}, {}, {}, {}] must have xmax > xmin and ymax > ymin",
+                                                        b.xmin, b.ymin, b.xmax, b.ymax));
+        checkSize(c, b.radius, b.radius.loc.file.empty() ? b.loc : b.radius.loc, key + ".radius");
+        c.material(b.loc, key + ".material", b.material, names);
+        c.nonNegative(b.loc, key + ".temperature", b.temperature, "J");
+        if (b.lattice == model::BlockDef::Lattice::Random) {
+            if (b.count <= 0) d.error(b.loc, key + ".count", fmt::format("random blocks need count > 0, got {}", b.count));
+        } else {
+            c.positive(b.loc, key + ".spacing", b.spacing, "m");
+            const Real dmax = 2 * model::maxRadius(b.radius);
+            if (b.spacing > 0 && dmax > b.spacing)
+                d.error(b.loc, key + ".spacing",
+                        fmt::format("spacing {} m is smaller than the largest diameter {} m: neighbours would overlap", b.spacing, dmax));
+            if (b.count < -1 || b.count == 0)
+                d.error(b.loc, key + ".count", fmt::format("count must be > 0 (or omitted for a full lattice), got {}", b.count));
+        }
+    }
+    for (std::size_t k = 0; k < sc.walls.size(); ++k) {
+        const auto& w = sc.walls[k];
+        const std::string key = fmt::format("wall[{}]", k);
+        c.material(w.loc, key + ".material", w.material, names);
+        if (w.points.size() < 2) {
+            d.error(w.loc, key + ".points", fmt::format("a wall needs at least 2 points, got {}", w.points.size()));
+            continue;
+        }
+        if (w.closed && w.points.size() < 3) d.error(w.loc, key + ".closed", "a closed wall needs at least 3 points");
+        const std::size_t segs = w.closed ? w.points.size() : w.points.size() - 1;
+        for (std::size_t s = 0; s < segs; ++s)
+            if (norm2(w.points[(s + 1) % w.points.size()] - w.points[s]) <= 0)
+                d.error(w.loc, key + ".points", fmt::format("points {} and {} coincide (zero-length segment)", s, (s + 1) % w.points.size()));
+    }
+    c.nonNegative(sc.output.loc, "output.snapshot_interval", sc.output.snapshotInterval, "s");
+    c.nonNegative(sc.output.loc, "output.series_interval", sc.output.seriesInterval, "s");
+    c.nonNegative(sc.output.loc, "output.checkpoint_interval", sc.output.checkpointInterval, "s");
+}
+
+/// Start overlaps between particles (reports the first 10 with their origins).
+void checkOverlaps(const model::InitialParticles& init, Diagnostics& d) {
+    model::ParticleStore s;
+    s.reserve(init.particles.size());
+    for (std::size_t k = 0; k < init.particles.size(); ++k) {
+        const auto& p = init.particles[k];
+        s.add(static_cast<ParticleId>(k), p.position, {}, 0, 0, p.radius, 1, 1, 0);
+    }
+    std::vector<std::uint64_t> pairs;
+    dem::CellGrid grid;
+    grid.findPairs(s, 0.0, pairs);
+    std::size_t reported = 0;
+    for (const auto key : pairs) {
+        const auto i = dem::keyFirst(key), j = dem::keySecond(key);
+        const Real dist = std::sqrt(norm2(init.particles[i].position - init.particles[j].position));
+        const Real overlap = init.particles[i].radius + init.particles[j].radius - dist;
+        if (overlap <= 1e-12 * (init.particles[i].radius + init.particles[j].radius)) continue;
+        if (reported++ == 10) {
+            d.error(init.origins[init.particles[i].origin], "particle", "... more overlapping particles not listed");
+            break;
+        }
+        d.error(init.origins[init.particles[i].origin], "particle",
+                fmt::format("particles {} and {} overlap by {:.4g} m at start (the other is defined at {})", i, j, overlap,
+                            init.origins[init.particles[j].origin].str()));
+    }
+}
+
+}  // namespace
+
+ValidatedScene validate(const model::SceneDef& scene) {
+    Diagnostics diags;
+    Checker checker(diags);
+    const auto names = dem::materialNames(scene);
+    checkStatic(scene, checker, names);
+    const dem::LawTable laws = dem::buildLawTable(scene, diags);
+    ValidatedScene out;
+    out.initial = model::generateParticles(scene, names, diags);
+    if (!diags.empty()) diags.throwIfAny();  // later checks need consistent materials and sizes
+
+    const std::size_t nm = names.size();
+    std::vector<Real> minMass(nm, 0);
+    std::vector<bool> usedByWalls(nm, false);
+    std::vector<bool> usedByParticles(nm, false);
+    for (const auto& p : out.initial.particles) {
+        const Real m = model::diskMass(scene.materials[p.material].density, p.radius);
+        minMass[p.material] = minMass[p.material] > 0 ? std::min(minMass[p.material], m) : m;
+        usedByParticles[p.material] = true;
+    }
+    for (const auto& w : scene.walls)
+        usedByWalls[static_cast<std::size_t>(std::find(names.begin(), names.end(), w.material) - names.begin())] = true;
+    if (out.initial.particles.empty()) diags.error({scene.path, 0, 0}, "", "the scene has no particles ([[particle]] or [[block]])");
+    for (std::size_t m = 0; m < nm; ++m) {
+        if (usedByParticles[m] && !(scene.materials[m].density > 0))
+            diags.error(scene.materials[m].loc, fmt::format("material[{}].density", m),
+                        fmt::format("material '{}' is used by particles and needs density > 0 [kg/m^2], got {}", names[m],
+                                    scene.materials[m].density));
+        for (std::size_t o = 0; o < nm; ++o) {
+            const bool occurs = usedByParticles[m] && (usedByParticles[o] || usedByWalls[o]);
+            if (occurs && !laws.has(static_cast<std::uint32_t>(m), static_cast<std::uint32_t>(o)))
+                diags.error({scene.path, 0, 0}, "contact",
+                            fmt::format("no [[contact]] law for materials {}/{} (add one, or use \"*\")", names[m], names[o]));
+        }
+    }
+    checkOverlaps(out.initial, diags);
+    diags.throwIfAny();
+
+    out.advice = dem::adviseTimeStep(laws, names, minMass, usedByWalls);
+    const Real dt = scene.dem.dt;
+    if (out.advice.stabilityLimit > 0 && dt > out.advice.stabilityLimit)
+        diags.error(scene.dem.loc, "dem.dt",
+                    fmt::format("dt = {:.4g} s is above the stability limit {:.4g} s of the {} contact (contact time {:.4g} s); "
+                                "allowed (0, {:.4g}], advised {:.4g} s",
+                                dt, out.advice.stabilityLimit, out.advice.pair, out.advice.contactTime,
+                                out.advice.stabilityLimit, out.advice.advisedDt));
+    else if (out.advice.contactTime > 0 && dt > out.advice.contactTime / 20)
+        out.warnings.push_back(fmt::format("dt = {:.4g} s resolves the {} contact time {:.4g} s with only {:.1f} steps; "
+                                           "advised dt = {:.4g} s (50 steps)",
+                                           dt, out.advice.pair, out.advice.contactTime, out.advice.contactTime / dt,
+                                           out.advice.advisedDt));
+    diags.throwIfAny();
+    return out;
+}
+
+}  // namespace granulab::io

@@ -1,0 +1,210 @@
+// SPDX-License-Identifier: MIT
+// Minimal reader for our own .vtp/.pvd files: the XML header is scanned tag by tag (no XML
+// library), each DataArray's section, Name, type, NumberOfComponents and offset are recorded,
+// and the values are copied out of the raw appended block (UInt64 byte count + data).
+#include "io/vtk_reader.hpp"
+
+#include <bit>
+#include <charconv>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string_view>
+
+namespace granulab::io {
+
+namespace {
+static_assert(std::endian::native == std::endian::little, "the VTK reader assumes a little-endian host");
+
+std::string readWholeFile(const std::string& path) {
+    std::ifstream is(path, std::ios::binary);
+    if (!is) throw std::runtime_error("cannot open " + path);
+    std::ostringstream ss;
+    ss << is.rdbuf();
+    return ss.str();
+}
+
+/// Copies the value of attribute `key` of one tag's text into `out`; false if it is absent.
+bool attribute(std::string_view tag, std::string_view key, std::string& out) {
+    std::string needle(1, ' ');  // appended piecewise: GCC 12 warns (-Wrestrict) on a + chain
+    needle.append(key).append("=\"");
+    const auto p = tag.find(needle);
+    if (p == std::string_view::npos) return false;
+    const auto start = p + needle.size();
+    const auto end = tag.find('"', start);
+    if (end == std::string_view::npos) return false;
+    out.assign(tag.substr(start, end - start));
+    return true;
+}
+
+template <class T>
+T parseNumber(const std::string& text, const std::string& path, const char* what) {
+    T v{};
+    const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (r.ec != std::errc() || r.ptr != text.data() + text.size())
+        throw std::runtime_error(path + ": malformed " + what + " \"" + text + "\"");
+    return v;
+}
+
+/// Calls fn(tagName, tagText) for every tag `<...>` of `xml`.
+template <class Fn>
+void forEachTag(std::string_view xml, const std::string& path, Fn&& fn) {
+    std::size_t pos = 0;
+    while ((pos = xml.find('<', pos)) != std::string_view::npos) {
+        const auto end = xml.find('>', pos);
+        if (end == std::string_view::npos) throw std::runtime_error(path + ": unterminated XML tag");
+        const std::string_view tag = xml.substr(pos + 1, end - pos - 1);
+        fn(tag.substr(0, tag.find_first_of(" /\n")), tag);
+        pos = end + 1;
+    }
+}
+
+struct ArrayInfo {
+    std::string section, name, type;
+    int components = 1;
+    std::uint64_t offset = 0;
+};
+
+/// One parsed .vtp file: array directory plus the appended bytes.
+class VtpFile {
+public:
+    explicit VtpFile(const std::string& path) : m_path(path), m_text(readWholeFile(path)) {
+        const auto appended = m_text.find("<AppendedData");
+        if (appended == std::string::npos) fail("no <AppendedData> block");
+        const std::string_view header(m_text.data(), appended);
+        if (header.find("type=\"PolyData\"") == std::string_view::npos ||
+            header.find("byte_order=\"LittleEndian\"") == std::string_view::npos ||
+            header.find("header_type=\"UInt64\"") == std::string_view::npos)
+            fail("not a little-endian UInt64-header VTK PolyData file");
+        const auto tagEnd = m_text.find('>', appended);
+        if (tagEnd == std::string::npos ||
+            std::string_view(m_text).substr(appended, tagEnd - appended).find("encoding=\"raw\"") ==
+                std::string_view::npos)
+            fail("appended data is not raw binary");
+        const auto marker = m_text.find('_', tagEnd);
+        if (marker == std::string::npos) fail("no '_' marker in <AppendedData>");
+        m_dataStart = marker + 1;
+
+        std::string section;
+        forEachTag(header, path, [&](std::string_view name, std::string_view tag) {
+            if (name == "DataArray") {
+                ArrayInfo a;
+                a.section = section;
+                std::string comps = "1", offset;
+                if (!attribute(tag, "Name", a.name) || !attribute(tag, "type", a.type) ||
+                    !attribute(tag, "offset", offset))
+                    fail("DataArray without Name, type or offset");
+                attribute(tag, "NumberOfComponents", comps);
+                a.components = parseNumber<int>(comps, path, "NumberOfComponents");
+                a.offset = parseNumber<std::uint64_t>(offset, path, "offset");
+                m_arrays.push_back(std::move(a));
+            } else if (name == "FieldData" || name == "PointData" || name == "CellData" ||
+                       name == "Points" || name == "Verts" || name == "Lines") {
+                section = std::string(name);
+            }
+        });
+    }
+
+    /// Values of array `name` in `section`; checks the type and the component count.
+    template <class T>
+    std::vector<T> read(const std::string& section, const std::string& name, const char* type,
+                        int components) const {
+        const ArrayInfo& a = find(section, name);
+        if (a.type != type || a.components != components)
+            fail("array " + name + " has type " + a.type + " x" + std::to_string(a.components) +
+                 ", expected " + type + " x" + std::to_string(components));
+        const std::uint64_t at = m_dataStart + a.offset;
+        std::uint64_t bytes = 0;
+        if (at + sizeof bytes > m_text.size()) fail("array " + name + " lies past the end of the file");
+        std::memcpy(&bytes, m_text.data() + at, sizeof bytes);
+        if (bytes > m_text.size() - at - sizeof bytes) fail("array " + name + " is truncated");
+        if (bytes % (sizeof(T) * components) != 0) fail("array " + name + " has a partial tuple");
+        std::vector<T> v(bytes / sizeof(T));
+        std::memcpy(v.data(), m_text.data() + at + sizeof bytes, bytes);
+        return v;
+    }
+
+    [[noreturn]] void fail(const std::string& what) const { throw std::runtime_error(m_path + ": " + what); }
+
+private:
+    const ArrayInfo& find(const std::string& section, const std::string& name) const {
+        for (const ArrayInfo& a : m_arrays)
+            if (a.section == section && a.name == name) return a;
+        fail("no DataArray \"" + name + "\" in <" + section + ">");
+    }
+
+    std::string m_path;
+    std::string m_text;
+    std::size_t m_dataStart = 0;
+    std::vector<ArrayInfo> m_arrays;
+};
+
+double readTime(const VtpFile& f) {
+    const auto t = f.read<double>("FieldData", "TimeValue", "Float64", 1);
+    if (t.size() != 1) f.fail("TimeValue must hold one value");
+    return t[0];
+}
+}  // namespace
+
+ParticleFrame readParticlesVtp(const std::string& path) {
+    const VtpFile f(path);
+    ParticleFrame frame;
+    frame.time = readTime(f);
+    const auto points = f.read<double>("Points", "Points", "Float64", 3);
+    const std::size_t n = points.size() / 3;
+    frame.x.resize(n);
+    frame.y.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        frame.x[i] = points[3 * i];
+        frame.y[i] = points[3 * i + 1];
+    }
+    frame.radius = f.read<double>("PointData", "radius", "Float64", 1);
+    frame.speed = f.read<double>("PointData", "speed", "Float64", 1);
+    frame.angle = f.read<double>("PointData", "angle", "Float64", 1);
+    frame.id = f.read<std::int64_t>("PointData", "id", "Int64", 1);
+    if (frame.radius.size() != n || frame.speed.size() != n || frame.angle.size() != n ||
+        frame.id.size() != n)
+        f.fail("point data arrays differ in length from Points");
+    return frame;
+}
+
+WallFrame readWallsVtp(const std::string& path) {
+    const VtpFile f(path);
+    const auto points = f.read<double>("Points", "Points", "Float64", 3);
+    const auto connectivity = f.read<std::int64_t>("Lines", "connectivity", "Int64", 1);
+    const auto offsets = f.read<std::int64_t>("Lines", "offsets", "Int64", 1);
+    const auto nPoints = static_cast<std::int64_t>(points.size() / 3);
+    WallFrame frame;
+    std::int64_t start = 0;
+    for (const std::int64_t end : offsets) {
+        if (end - start != 2 || end > static_cast<std::int64_t>(connectivity.size()))
+            f.fail("wall cells must be 2-point lines");
+        const std::int64_t ia = connectivity[start], ib = connectivity[start + 1];
+        if (ia < 0 || ib < 0 || ia >= nPoints || ib >= nPoints) f.fail("line point index out of range");
+        frame.a.push_back({points[3 * ia], points[3 * ia + 1]});
+        frame.b.push_back({points[3 * ib], points[3 * ib + 1]});
+        start = end;
+    }
+    return frame;
+}
+
+std::vector<PvdEntry> readPvd(const std::string& path) {
+    const std::string text = readWholeFile(path);
+    if (text.find("type=\"Collection\"") == std::string::npos)
+        throw std::runtime_error(path + ": not a VTK Collection (.pvd) file");
+    std::vector<PvdEntry> entries;
+    forEachTag(text, path, [&](std::string_view name, std::string_view tag) {
+        if (name != "DataSet") return;
+        PvdEntry e;
+        std::string time, part;
+        if (!attribute(tag, "timestep", time) || !attribute(tag, "file", e.file) || e.file.empty())
+            throw std::runtime_error(path + ": DataSet without timestep or file");
+        e.time = parseNumber<double>(time, path, "timestep");
+        if (attribute(tag, "part", part) && !part.empty()) e.part = parseNumber<int>(part, path, "part");
+        entries.push_back(std::move(e));
+    });
+    return entries;
+}
+
+}  // namespace granulab::io

@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: MIT
+// VTK XML output for ParaView (DESIGN.md "io/ writers"): particles and walls as PolyData (.vtp,
+// raw binary appended data) and a .pvd collection that strings the snapshots into a time series.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "io/vtk_reader.hpp"
+#include "model/particle_store.hpp"
+#include "model/walls.hpp"
+
+namespace granulab::io {
+
+/// Writes one vertex per particle. Point data: id, radius [m], velocity [m/s] (3 components,
+/// z = 0), speed [m/s], omega [rad/s], angle [rad], mass [kg], material; field data TimeValue [s].
+/// In ParaView show the disks with the Glyph filter: glyph type Sphere (or 2D Glyph Circle),
+/// scale array `radius`, scale factor 2 (the glyph sources have radius 0.5, so 2 r = diameter).
+/// Creates the parent folder if needed; throws std::runtime_error when the file cannot be written.
+void writeParticlesVtp(const std::string& path, const model::ParticleStore& s, double time);
+
+/// Writes wall segments as Lines cells (points = segment end points a, b of each segment) with
+/// the cell data `wall` (index of the wall the segment belongs to) and field data TimeValue [s].
+void writeWallsVtp(const std::string& path, const model::WallSet& w, double time);
+
+/// "vtk/<stem>_NNNNNN.vtp" (6-digit snapshot index), relative to the output folder.
+std::string snapshotFileName(const std::string& stem, int index);
+
+/// ParaView .pvd collection: one DataSet per (time, part). write() rewrites the whole file
+/// (atomically, via a temporary file and rename), so a killed run still leaves a valid file.
+class PvdWriter {
+public:
+    explicit PvdWriter(std::string path);
+
+    /// Registers a file (path relative to the .pvd's folder) for time [s] and part.
+    void add(double time, int part, const std::string& relativeFile);
+    void write() const;
+    /// Replaces the entry list by the file's content (on --resume); a missing file gives an
+    /// empty list, a malformed one throws std::runtime_error.
+    void load();
+    /// Drops every entry with time > `time` [s] (snapshots newer than the checkpoint resumed).
+    void truncateAfter(double time);
+
+    const std::vector<PvdEntry>& entries() const noexcept { return m_entries; }
+    const std::string& path() const noexcept { return m_path; }
+
+private:
+    std::string m_path;
+    std::vector<PvdEntry> m_entries;
+};
+
+/// Convenience for the run command: writes OUTDIR/vtk/particles_NNNNNN.vtp (part 0) and
+/// OUTDIR/vtk/walls_NNNNNN.vtp (part 1), adds both to `pvd` and rewrites it.
+void writeSnapshot(const std::string& outDir, int index, const model::ParticleStore& s,
+                   const model::WallSet& w, double time, PvdWriter& pvd);
+
+}  // namespace granulab::io

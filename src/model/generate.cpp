@@ -1,0 +1,217 @@
+// SPDX-License-Identifier: MIT
+// Particle generation: lattices, random sequential addition, size distributions, thermal
+// velocities. Every random draw comes from CounterRng(seed, stream = block index).
+#include "model/generate.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <unordered_map>
+
+#include "core/rng.hpp"
+
+namespace granulab::model {
+
+Real minRadius(const SizeDistDef& d) noexcept {
+    switch (d.kind) {
+        case SizeDistDef::Kind::Constant: return d.value;
+        case SizeDistDef::Kind::Uniform:
+        case SizeDistDef::Kind::Gaussian: return d.min;
+    }
+    return d.value;
+}
+
+Real maxRadius(const SizeDistDef& d) noexcept {
+    switch (d.kind) {
+        case SizeDistDef::Kind::Constant: return d.value;
+        case SizeDistDef::Kind::Uniform:
+        case SizeDistDef::Kind::Gaussian: return d.max;
+    }
+    return d.value;
+}
+
+namespace {
+
+Real drawRadius(const SizeDistDef& d, CounterRng& rng) {
+    switch (d.kind) {
+        case SizeDistDef::Kind::Constant: return d.value;
+        case SizeDistDef::Kind::Uniform: return rng.uniform(d.min, d.max);
+        case SizeDistDef::Kind::Gaussian:
+            for (int attempt = 0; attempt < 1000000; ++attempt) {  // truncation by rejection
+                const Real r = d.mean + d.sigma * rng.normal();
+                if (r >= d.min && r <= d.max) return r;
+            }
+            return std::clamp(d.mean, d.min, d.max);
+    }
+    return d.value;
+}
+
+std::vector<Vec2> latticeSites(const BlockDef& b) {
+    std::vector<Vec2> sites;
+    const Real a = b.spacing;
+    const bool hex = b.lattice == BlockDef::Lattice::Hexagonal;
+    const Real dy = hex ? a * std::sqrt(3.0) / 2.0 : a;
+    const Vec2 origin = b.origin.value_or(Vec2{b.xmin + 0.5 * a, b.ymin + 0.5 * a});
+    // Lowest row index whose y is >= ymin, lowest column whose x >= xmin (allow origin outside).
+    const long row0 = static_cast<long>(std::ceil((b.ymin - origin.y) / dy - 1e-12));
+    for (long row = row0;; ++row) {
+        const Real y = origin.y + static_cast<Real>(row) * dy;
+        if (y >= b.ymax) break;
+        const Real shift = (hex && (row % 2 != 0)) ? 0.5 * a : 0.0;
+        const Real x0 = origin.x + shift;
+        const long col0 = static_cast<long>(std::ceil((b.xmin - x0) / a - 1e-12));
+        for (long col = col0;; ++col) {
+            const Real x = x0 + static_cast<Real>(col) * a;
+            if (x >= b.xmax) break;
+            if (x < b.xmin || y < b.ymin) continue;
+            sites.push_back({x, y});
+            if (b.count >= 0 && static_cast<std::int64_t>(sites.size()) >= b.count) return sites;
+        }
+    }
+    return sites;
+}
+
+/// Random sequential addition of disks with radii `radii` (largest first) into the region,
+/// avoiding `existing` disks; returns false if a disk could not be placed.
+bool placeRandom(const BlockDef& b, std::vector<Real>& radii, CounterRng& rng,
+                 const std::vector<InitialParticle>& existing, std::vector<Vec2>& out,
+                 std::size_t& placed) {
+    std::sort(radii.begin(), radii.end(), std::greater<>());
+    const Real rmax = radii.empty() ? 0 : radii.front();
+    Real existingMax = 0;
+    for (const auto& p : existing) existingMax = std::max(existingMax, p.radius);
+    const Real cell = 2 * std::max(rmax, existingMax);
+    if (cell <= 0) return true;
+    const auto cellKey = [&](Real x, Real y) {
+        const auto cx = static_cast<std::int64_t>(std::floor(x / cell));
+        const auto cy = static_cast<std::int64_t>(std::floor(y / cell));
+        return (static_cast<std::uint64_t>(cx) << 32) ^ static_cast<std::uint64_t>(cy & 0xffffffff);
+    };
+    std::unordered_map<std::uint64_t, std::vector<std::pair<Vec2, Real>>> grid;
+    for (const auto& p : existing) grid[cellKey(p.position.x, p.position.y)].push_back({p.position, p.radius});
+    const auto fits = [&](Vec2 c, Real r) {
+        const auto cx = static_cast<std::int64_t>(std::floor(c.x / cell));
+        const auto cy = static_cast<std::int64_t>(std::floor(c.y / cell));
+        for (std::int64_t ix = cx - 1; ix <= cx + 1; ++ix)
+            for (std::int64_t iy = cy - 1; iy <= cy + 1; ++iy) {
+                const std::uint64_t key = (static_cast<std::uint64_t>(ix) << 32) ^
+                                          static_cast<std::uint64_t>(iy & 0xffffffff);
+                auto it = grid.find(key);
+                if (it == grid.end()) continue;
+                for (const auto& [q, rq] : it->second)
+                    if (norm2(c - q) < (r + rq) * (r + rq)) return false;
+            }
+        return true;
+    };
+    placed = 0;
+    for (Real r : radii) {
+        bool ok = false;
+        for (int attempt = 0; attempt < 20000 && !ok; ++attempt) {
+            const Vec2 c{rng.uniform(b.xmin + r, b.xmax - r), rng.uniform(b.ymin + r, b.ymax - r)};
+            if (!(b.xmax - b.xmin > 2 * r && b.ymax - b.ymin > 2 * r)) break;
+            if (fits(c, r)) {
+                grid[cellKey(c.x, c.y)].push_back({c, r});
+                out.push_back(c);
+                ok = true;
+            }
+        }
+        if (!ok) return false;
+        ++placed;
+    }
+    return true;
+}
+
+/// Random Gaussian velocities with <m v_x^2> = T, zero net momentum, rescaled to exactly T.
+void thermalVelocities(std::vector<InitialParticle>& ps, std::size_t first, Real temperature,
+                       const std::vector<Real>& masses, CounterRng& rng) {
+    const std::size_t n = ps.size() - first;
+    if (n < 2 || temperature <= 0) return;
+    Vec2 momentum;
+    Real totalMass = 0;
+    std::vector<Vec2> v(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        const Real s = std::sqrt(temperature / masses[k]);
+        v[k] = {s * rng.normal(), s * rng.normal()};
+        momentum += v[k] * masses[k];
+        totalMass += masses[k];
+    }
+    const Vec2 vcm = momentum / totalMass;
+    Real twiceKe = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+        v[k] -= vcm;
+        twiceKe += masses[k] * norm2(v[k]);
+    }
+    const Real dof = 2.0 * static_cast<Real>(n) - 2.0;
+    const Real scale = twiceKe > 0 ? std::sqrt(temperature * dof / twiceKe) : 0.0;
+    for (std::size_t k = 0; k < n; ++k) ps[first + k].velocity += v[k] * scale;
+}
+
+}  // namespace
+
+InitialParticles generateParticles(const SceneDef& scene, const std::vector<std::string>& materialNames,
+                                   Diagnostics& diags) {
+    InitialParticles out;
+    auto materialOf = [&](const std::string& name) -> std::uint32_t {
+        for (std::size_t k = 0; k < materialNames.size(); ++k)
+            if (materialNames[k] == name) return static_cast<std::uint32_t>(k);
+        return 0;  // unknown names are reported by validate()
+    };
+    auto densityOf = [&](std::uint32_t m) -> Real {
+        for (const auto& md : scene.materials)
+            if (md.name == materialNames[m]) return md.density;
+        return 1.0;
+    };
+    for (const auto& p : scene.particles) {
+        InitialParticle ip;
+        ip.position = p.position;
+        ip.velocity = p.velocity;
+        ip.angle = p.angle;
+        ip.omega = p.omega;
+        ip.radius = p.radius;
+        ip.material = materialOf(p.material);
+        ip.origin = static_cast<std::uint32_t>(out.origins.size());
+        out.origins.push_back(p.loc);
+        out.particles.push_back(ip);
+    }
+    for (std::size_t bi = 0; bi < scene.blocks.size(); ++bi) {
+        const BlockDef& b = scene.blocks[bi];
+        CounterRng rng(scene.run.seed, 1000 + bi);
+        const std::uint32_t origin = static_cast<std::uint32_t>(out.origins.size());
+        out.origins.push_back(b.loc);
+        const std::uint32_t mat = materialOf(b.material);
+        std::vector<Vec2> sites;
+        std::vector<Real> radii;
+        if (b.lattice == BlockDef::Lattice::Random) {
+            radii.resize(static_cast<std::size_t>(std::max<std::int64_t>(b.count, 0)));
+            for (auto& r : radii) r = drawRadius(b.radius, rng);
+            std::size_t placed = 0;
+            if (!placeRandom(b, radii, rng, out.particles, sites, placed)) {
+                diags.error(b.loc, "block",
+                            fmt::format("random placement placed only {} of {} particles in region "
+                                        "[{}, {}] x [{}, {}]; enlarge the region or lower count",
+                                        placed, b.count, b.xmin, b.xmax, b.ymin, b.ymax));
+                continue;
+            }
+        } else {
+            sites = latticeSites(b);
+            radii.resize(sites.size());
+            for (auto& r : radii) r = drawRadius(b.radius, rng);
+        }
+        const std::size_t first = out.particles.size();
+        std::vector<Real> masses;
+        for (std::size_t k = 0; k < sites.size(); ++k) {
+            InitialParticle ip;
+            ip.position = sites[k];
+            ip.velocity = b.velocity;
+            ip.radius = radii[k];
+            ip.material = mat;
+            ip.origin = origin;
+            out.particles.push_back(ip);
+            masses.push_back(diskMass(densityOf(mat), radii[k]));
+        }
+        thermalVelocities(out.particles, first, b.temperature, masses, rng);
+    }
+    return out;
+}
+
+}  // namespace granulab::model

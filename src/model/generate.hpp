@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: MIT
+// Expands explicit particles and generated blocks (lattices, random placement, size
+// distributions, thermal velocities) into one list of initial particles, deterministically
+// from the scene seed (core/rng.hpp).
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "core/error.hpp"
+#include "model/scene_def.hpp"
+
+namespace granulab::model {
+
+struct InitialParticle {
+    Vec2 position, velocity;
+    Real angle = 0, omega = 0, radius = 0;
+    std::uint32_t material = 0;
+    std::uint32_t origin = 0;  ///< index into InitialParticles::origins (where it was defined)
+};
+
+struct InitialParticles {
+    std::vector<InitialParticle> particles;  ///< id = index
+    std::vector<SourceLoc> origins;          ///< explicit particles and blocks, by origin index
+};
+
+/// Mass [kg] and moment of inertia [kg m^2] of a disk of radius r [m] and areal density rho.
+inline Real diskMass(Real rho, Real r) noexcept { return rho * kPi * r * r; }
+inline Real diskInertia(Real mass, Real r) noexcept { return 0.5 * mass * r * r; }
+
+/// Smallest and largest radius a size distribution can produce [m].
+Real minRadius(const SizeDistDef& d) noexcept;
+Real maxRadius(const SizeDistDef& d) noexcept;
+
+/// Generates all particles. `materialIndex` maps a material name to its index (-1 unknown).
+/// Problems (a block that cannot place its particles) go to `diags`.
+InitialParticles generateParticles(const SceneDef& scene,
+                                   const std::vector<std::string>& materialNames,
+                                   Diagnostics& diags);
+
+}  // namespace granulab::model

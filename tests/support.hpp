@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: MIT
+// Test helpers: build a World from a TOML string through the real reader/validator, run the
+// granulab binary, temporary folders.
+#pragma once
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "dem/setup.hpp"
+#include "io/scene_reader.hpp"
+#include "io/validate.hpp"
+
+namespace granulab::test {
+
+inline dem::World makeWorldFromToml(const std::string& toml, const std::vector<io::Override>& overrides = {}) {
+    const model::SceneDef scene = io::readSceneText(toml, "test.toml", overrides);
+    const io::ValidatedScene v = io::validate(scene);
+    dem::World w = dem::makeWorld(scene, v.initial);
+    w.initialize();
+    return w;
+}
+
+/// A fresh empty folder under the system temp dir.
+inline std::filesystem::path tempDir(const std::string& name) {
+    const auto dir = std::filesystem::temp_directory_path() / ("granulab_test_" + name);
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+inline void writeText(const std::filesystem::path& path, const std::string& text) {
+    std::ofstream out(path);
+    out << text;
+}
+
+inline std::string readText(const std::filesystem::path& path) {
+    std::ifstream in(path);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+struct CommandResult {
+    int status = -1;
+    std::string output;  ///< stdout and stderr together
+};
+
+/// Runs the granulab binary with `args` (a shell fragment).
+inline CommandResult runGranulab(const std::string& args, const std::filesystem::path& workDir) {
+    const auto log = workDir / "command.log";
+    const std::string cmd = std::string("cd '") + workDir.string() + "' && '" + GRANULAB_BINARY + "' " + args + " > '" +
+                            log.string() + "' 2>&1";
+    const int raw = std::system(cmd.c_str());
+    CommandResult r;
+    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    r.output = readText(log);
+    return r;
+}
+
+}  // namespace granulab::test
