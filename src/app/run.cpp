@@ -133,7 +133,11 @@ int runCommand(const RunOptions& opt) {
     io::OutputCounters counters;
     const bool resumed = !opt.resumeDir.empty();
     if (resumed) {
-        counters = io::readCheckpoint(opt.resumeDir, header, world);
+        try {
+            counters = io::readCheckpoint(opt.resumeDir, header, world);
+        } catch (const std::runtime_error& e) {  // a missing or foreign checkpoint is bad input
+            throw SceneError(makeDiagnostic(opt.resumeDir, 0, "--resume", e.what()));
+        }
     } else {
         world.initialize();
     }

@@ -1,0 +1,115 @@
+// SPDX-License-Identifier: MIT
+// Command-line behaviour: the bad-input table (each malformed scene gives its specific message
+// and exit status 2), bit-for-bit resume, determinism, info/help/version.
+#include <gtest/gtest.h>
+
+#include <fmt/format.h>
+
+#include "../support.hpp"
+
+using namespace granulab;
+
+namespace {
+const char* kGood = R"([run]
+end_time = 0.01
+[dem]
+dt = 1e-5
+[[material]]
+name = "g"
+density = 1.0
+[[contact]]
+materials = ["g", "g"]
+kn = 1e4
+[[particle]]
+position = [0.0, 0.0]
+radius = 0.01
+material = "g"
+[[particle]]
+position = [0.05, 0.0]
+radius = 0.01
+material = "g"
+)";
+
+std::string replace(std::string s, const std::string& from, const std::string& to) {
+    const auto pos = s.find(from);
+    EXPECT_NE(pos, std::string::npos) << from;
+    if (pos != std::string::npos) s.replace(pos, from.size(), to);
+    return s;
+}
+
+struct BadCase {
+    const char* name;
+    std::string scene;     ///< scene text ("" = do not write the file)
+    std::string extraArgs;
+    std::vector<std::string> expect;  ///< substrings of the message
+};
+}  // namespace
+
+TEST(Cli, BadInputTable) {
+    const auto dir = test::tempDir("bad_input");
+    const BadCase cases[] = {
+        {"syntax", "[run\nend_time = 1\n", "", {"bad.toml:1", "syntax error"}},
+        {"unknown_key", replace(kGood, "dt = 1e-5", "dtt = 1e-5"), "", {"bad.toml:4", "dem.dtt", "did you mean 'dt'"}},
+        {"negative_radius", replace(kGood, "radius = 0.01\nmaterial = \"g\"\n[[particle]]", "radius = -0.01\nmaterial = \"g\"\n[[particle]]"),
+         "", {"bad.toml:11", "particle[0].radius", "must be > 0", "(0, inf)"}},
+        {"overlap", replace(kGood, "[0.05, 0.0]", "[0.015, 0.0]"), "", {"overlap by", "bad.toml:15"}},
+        {"nan", replace(kGood, "dt = 1e-5", "dt = nan"), "", {"bad.toml:4", "dem.dt", "finite"}},
+        {"missing_file", "", "", {"missing.toml", "cannot open scene file"}},
+        {"unstable_dt", replace(kGood, "dt = 1e-5", "dt = 1e-3"), "", {"dem.dt", "above the stability limit", "allowed (0,"}},
+        {"unknown_material", replace(kGood, "materials = [\"g\", \"g\"]", "materials = [\"g\", \"gg\"]"), "", {"unknown material 'gg'"}},
+        {"missing_law_parameter", replace(kGood, "kn = 1e4", "kt = 1e4"), "", {"missing required parameter 'kn'", "kt"}},
+        {"unknown_law", replace(kGood, "kn = 1e4", "kn = 1e4\nnormal = \"hook\""), "", {"unknown normal law 'hook'", "did you mean 'hooke'"}},
+        {"bad_range", replace(kGood, "kn = 1e4", "kn = 1e4\ndamping = \"restitution\"\ne = 1.5"), "", {"e = 1.5 is out of range", "[0, 1]"}},
+        {"bad_set", kGood, "--set dem.dt", {"expected key=value"}},
+        {"set_unknown_key", kGood, "--set dem.tdt=1", {"--set", "dem.tdt", "unknown key", "did you mean 'dt'"}},
+        {"no_checkpoint", kGood, "--resume nowhere", {"nowhere", "no checkpoint"}},
+    };
+    for (const auto& c : cases) {
+        SCOPED_TRACE(c.name);
+        std::string file = "bad.toml";
+        if (c.scene.empty()) file = "missing.toml";
+        else test::writeText(dir / file, c.scene);
+        const auto r = test::runGranulab(fmt::format("run {} --quiet --out out_{} {}", file, c.name, c.extraArgs), dir);
+        EXPECT_EQ(r.status, 2) << r.output;
+        for (const auto& e : c.expect) EXPECT_NE(r.output.find(e), std::string::npos) << "missing '" << e << "' in:\n" << r.output;
+    }
+}
+
+TEST(Cli, ResumeContinuesBitForBitAndRunsAreDeterministic) {
+    const auto dir = test::tempDir("resume");
+    const std::string scene = std::string(GRANULAB_SOURCE_DIR) + "/examples/disks_in_box.toml";
+    const std::string common = " --quiet --set run.end_time=0.03 --set output.snapshot_interval=0.01";
+    auto run = [&](const std::string& args) {
+        const auto r = test::runGranulab("run '" + scene + "'" + common + " " + args, dir);
+        EXPECT_EQ(r.status, 0) << r.output;
+    };
+    run("--out full");
+    run("--out again");
+    run("--out split --set run.end_time=0.0137");
+    run("--resume split");
+    const std::string full = test::readText(dir / "full/final.csv");
+    ASSERT_GT(full.size(), 1000u);
+    EXPECT_EQ(full, test::readText(dir / "again/final.csv"));  // deterministic
+    EXPECT_EQ(full, test::readText(dir / "split/final.csv"));  // resumed run = uninterrupted run
+    // The resumed series continues the first part without duplicated times.
+    const std::string series = test::readText(dir / "split/series.csv");
+    EXPECT_NE(series.find("\n0.030000000000000002,"), std::string::npos);
+    EXPECT_EQ(series.find("\n0.0137"), series.rfind("\n0.0137"));
+}
+
+TEST(Cli, InfoHelpVersion) {
+    const auto dir = test::tempDir("info");
+    const std::string scene = std::string(GRANULAB_SOURCE_DIR) + "/examples/disks_in_box.toml";
+    auto r = test::runGranulab("info '" + scene + "'", dir);
+    EXPECT_EQ(r.status, 0);
+    EXPECT_NE(r.output.find("1500 disks"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("advised dt"), std::string::npos) << r.output;
+    r = test::runGranulab("help laws", dir);
+    EXPECT_EQ(r.status, 0);
+    EXPECT_NE(r.output.find("cundall_strack"), std::string::npos);
+    r = test::runGranulab("--version", dir);
+    EXPECT_EQ(r.status, 0);
+    EXPECT_NE(r.output.find("granulab 0."), std::string::npos);
+    r = test::runGranulab("frobnicate", dir);
+    EXPECT_EQ(r.status, 2);
+}
