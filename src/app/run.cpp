@@ -113,8 +113,13 @@ std::string describeStatus(std::uint32_t status, const dem::World& world) {
                                   world.forceStats().maxRelativeOverlap));
     std::string s = fmt::format("the run became unstable at t = {:.6g} s (step {}): ", world.time(), world.stepIndex());
     for (std::size_t k = 0; k < why.size(); ++k) s += (k ? "; " : "") + why[k];
-    s += ". Likely causes: time step too large for the contact stiffness (see `granulab info`), "
-         "or particles created overlapping. The last good checkpoint is kept.";
+    s += ". Likely causes: ";
+    if (status & dem::kStepDeepOverlap)
+        s += "contact stiffness too low for the impact speeds (overlap ~ v sqrt(meff/kn)); raise kn or lower the speeds";
+    else
+        s += "time step too large for the contact stiffness (see `granulab info` for the advised dt), "
+             "or particles created overlapping";
+    s += ". The last good checkpoint is kept.";
     return s;
 }
 

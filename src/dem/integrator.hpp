@@ -33,6 +33,8 @@ public:
     virtual DriftVelocities driftVelocities() const noexcept = 0;
     /// Reorders per-particle integrator state after the store was permuted (new k = old order[k]).
     virtual void permute(const std::vector<std::uint32_t>& order) = 0;
+    /// Bytes of per-particle integrator state.
+    virtual std::size_t memoryBytes() const noexcept = 0;
 };
 
 /// Velocity Verlet (kick-drift-kick), second order and symplectic for conservative forces.
@@ -50,6 +52,9 @@ public:
         return {m_halfVx.data(), m_halfVy.data(), m_halfOmega.data()};
     }
     void permute(const std::vector<std::uint32_t>& order) override;
+    std::size_t memoryBytes() const noexcept override {
+        return (m_halfVx.capacity() + m_halfVy.capacity() + m_halfOmega.capacity()) * sizeof(Real);
+    }
 
 private:
     std::vector<Real> m_halfVx, m_halfVy, m_halfOmega;  ///< [m/s], [rad/s] v(t + dt/2)

@@ -85,7 +85,8 @@ std::uint32_t World::step() {
         m_walls.setTime(time());
     }
     if (!std::isfinite(maxSpeed)) status |= kStepNonFinite;
-    if (maxSpeed * dt > 0.5 * m_minRadius) status |= kStepTunnelling;
+    // A particle, or a wall sweeping through particles, moving half a radius in one step tunnels.
+    if ((maxSpeed + m_walls.maxDisplacement(0, 1)) * dt > 0.5 * m_minRadius) status |= kStepTunnelling;
     {  // 2+3+5 neighbour check, broad phase and history transfer when needed
         ScopedStage t(m_timers, Stage::Neighbors);
         const Real wallTravel = m_walls.maxDisplacement(m_list.wallTime0, time());
@@ -124,7 +125,8 @@ Vec2 World::momentum() const noexcept {
 }
 
 std::size_t World::memoryBytes() const noexcept {
-    return m_store.size() * model::ParticleStore::kBytesPerParticle + m_list.memoryBytes() + m_broad->memoryBytes();
+    return m_store.size() * model::ParticleStore::kBytesPerParticle + m_list.memoryBytes() + m_broad->memoryBytes() +
+           m_integrator->memoryBytes();
 }
 
 namespace {

@@ -113,3 +113,23 @@ TEST(Cli, InfoHelpVersion) {
     r = test::runGranulab("frobnicate", dir);
     EXPECT_EQ(r.status, 2);
 }
+
+TEST(Cli, UnstableRunStopsWithDiagnosisAndKeepsCheckpoint) {
+    const auto dir = test::tempDir("unstable");
+    // Two disks collide at 100 m/s: the overlap of the soft contact exceeds the radius (the
+    // spring is far too soft for that speed), which the engine must diagnose and stop.
+    std::string scene = kGood;
+    scene = replace(scene, "end_time = 0.01", "end_time = 0.002");
+    scene = replace(scene, "radius = 0.01\nmaterial = \"g\"\n[[particle]]", "radius = 0.01\nvelocity = [50.0, 0.0]\nmaterial = \"g\"\n[[particle]]");
+    scene += R"(velocity = [-50.0, 0.0]
+[output]
+checkpoint_interval = 0.0001
+)";
+    test::writeText(dir / "unstable.toml", scene);
+    const auto r = test::runGranulab("run unstable.toml --quiet --out out", dir);
+    EXPECT_EQ(r.status, 3) << r.output;
+    EXPECT_NE(r.output.find("unstable"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("last good checkpoint"), std::string::npos) << r.output;
+    EXPECT_TRUE(std::filesystem::exists(dir / "out/checkpoint.bin"));
+    EXPECT_NE(test::readText(dir / "out/summary.json").find("\"status\": \"unstable\""), std::string::npos);
+}
