@@ -8,6 +8,10 @@
 #include <sstream>
 #include <string>
 
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include "dem/setup.hpp"
 #include "io/scene_reader.hpp"
 #include "io/validate.hpp"
@@ -22,13 +26,25 @@ inline dem::World makeWorldFromToml(const std::string& toml, const std::vector<i
     return w;
 }
 
-/// A fresh empty folder under the system temp dir.
-inline std::filesystem::path tempDir(const std::string& name) {
-    const auto dir = std::filesystem::temp_directory_path() / ("granulab_test_" + name);
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-    return dir;
-}
+/// Fresh folder per test (test name + pid: safe under ctest -j and parallel build trees),
+/// removed again at the end of the test.
+struct ScratchDir {
+    std::filesystem::path path;
+    ScratchDir() {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        path = std::filesystem::temp_directory_path() /
+               (std::string("granulab_") + info->test_suite_name() + "_" + info->name() + "_" +
+                std::to_string(::getpid()));
+        std::filesystem::remove_all(path);
+        std::filesystem::create_directories(path);
+    }
+    ~ScratchDir() {
+        std::error_code ec;
+        std::filesystem::remove_all(path, ec);
+    }
+    ScratchDir(const ScratchDir&) = delete;
+    ScratchDir& operator=(const ScratchDir&) = delete;
+};
 
 inline void writeText(const std::filesystem::path& path, const std::string& text) {
     std::ofstream out(path);

@@ -46,7 +46,8 @@ struct BadCase {
 }  // namespace
 
 TEST(Cli, BadInputTable) {
-    const auto dir = test::tempDir("bad_input");
+    const test::ScratchDir scratch;
+    const auto& dir = scratch.path;
     const BadCase cases[] = {
         {"syntax", "[run\nend_time = 1\n", "", {"bad.toml:1", "syntax error"}},
         {"unknown_key", replace(kGood, "dt = 1e-5", "dtt = 1e-5"), "", {"bad.toml:4", "dem.dtt", "did you mean 'dt'"}},
@@ -76,7 +77,8 @@ TEST(Cli, BadInputTable) {
 }
 
 TEST(Cli, ResumeContinuesBitForBitAndRunsAreDeterministic) {
-    const auto dir = test::tempDir("resume");
+    const test::ScratchDir scratch;
+    const auto& dir = scratch.path;
     const std::string scene = std::string(GRANULAB_SOURCE_DIR) + "/examples/disks_in_box.toml";
     const std::string common = " --quiet --set run.end_time=0.03 --set output.snapshot_interval=0.01";
     auto run = [&](const std::string& args) {
@@ -98,7 +100,8 @@ TEST(Cli, ResumeContinuesBitForBitAndRunsAreDeterministic) {
 }
 
 TEST(Cli, InfoHelpVersion) {
-    const auto dir = test::tempDir("info");
+    const test::ScratchDir scratch;
+    const auto& dir = scratch.path;
     const std::string scene = std::string(GRANULAB_SOURCE_DIR) + "/examples/disks_in_box.toml";
     auto r = test::runGranulab("info '" + scene + "'", dir);
     EXPECT_EQ(r.status, 0);
@@ -115,7 +118,8 @@ TEST(Cli, InfoHelpVersion) {
 }
 
 TEST(Cli, UnstableRunStopsWithDiagnosisAndKeepsCheckpoint) {
-    const auto dir = test::tempDir("unstable");
+    const test::ScratchDir scratch;
+    const auto& dir = scratch.path;
     // Two disks collide at 100 m/s: the overlap of the soft contact exceeds the radius (the
     // spring is far too soft for that speed), which the engine must diagnose and stop.
     std::string scene = kGood;

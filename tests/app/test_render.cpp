@@ -11,29 +11,13 @@
 #include <unistd.h>
 
 #include "app/render.hpp"
+#include "../support.hpp"
 #include "io/vtk_writer.hpp"
 
 namespace granulab::app {
 namespace {
 
 namespace fs = std::filesystem;
-
-/// Fresh folder per test (test name + pid: safe under ctest -j and parallel build trees),
-/// removed again at the end of the test.
-struct ScratchDir {
-    fs::path path;
-    ScratchDir() {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        path = fs::temp_directory_path() /
-               (std::string("granulab_render_") + info->name() + "_" + std::to_string(::getpid()));
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~ScratchDir() {
-        std::error_code ec;
-        fs::remove_all(path, ec);
-    }
-};
 
 struct Rgb8 {
     int r, g, b;
@@ -85,7 +69,7 @@ void writeScene(const fs::path& dir) {
 }
 
 TEST(Render, DrawsDisksWithYUp) {
-    const ScratchDir scratch;
+    const test::ScratchDir scratch;
     const fs::path& dir = scratch.path;
     writeScene(dir);
     ASSERT_EQ(renderCommand(dir.string(), 400, true), 0);
@@ -128,7 +112,7 @@ TEST(Render, DrawsDisksWithYUp) {
 }
 
 TEST(Render, MissingFolderReturns2) {
-    const ScratchDir scratch;
+    const test::ScratchDir scratch;
     const fs::path dir = scratch.path / "nothing";
     ::testing::internal::CaptureStderr();
     EXPECT_EQ(renderCommand(dir.string(), 400, true), 2);

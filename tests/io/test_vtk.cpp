@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include "../support.hpp"
 #include "io/vtk_reader.hpp"
 #include "io/vtk_writer.hpp"
 
@@ -17,23 +18,6 @@ namespace granulab::io {
 namespace {
 
 namespace fs = std::filesystem;
-
-/// Fresh folder per test (test name + pid: safe under ctest -j and parallel build trees),
-/// removed again at the end of the test.
-struct ScratchDir {
-    fs::path path;
-    ScratchDir() {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        path = fs::temp_directory_path() /
-               (std::string("granulab_") + info->name() + "_" + std::to_string(::getpid()));
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~ScratchDir() {
-        std::error_code ec;
-        fs::remove_all(path, ec);
-    }
-};
 
 model::ParticleStore sampleParticles() {
     model::ParticleStore s;
@@ -51,7 +35,7 @@ std::string slurp(const fs::path& p) {
 }
 
 TEST(Vtk, ParticlesRoundTripExactly) {
-    const ScratchDir scratch;
+    const test::ScratchDir scratch;
     const fs::path& dir = scratch.path;
     const model::ParticleStore s = sampleParticles();
     const std::string path = (dir / "vtk" / "particles_000000.vtp").string();  // creates vtk/
@@ -80,7 +64,7 @@ TEST(Vtk, ParticlesRoundTripExactly) {
 }
 
 TEST(Vtk, EmptyParticleSet) {
-    const ScratchDir scratch;
+    const test::ScratchDir scratch;
     const fs::path& dir = scratch.path;
     writeParticlesVtp((dir / "p.vtp").string(), model::ParticleStore{}, 2.0);
     const ParticleFrame f = readParticlesVtp((dir / "p.vtp").string());
@@ -89,7 +73,7 @@ TEST(Vtk, EmptyParticleSet) {
 }
 
 TEST(Vtk, WallsRoundTripExactly) {
-    const ScratchDir scratch;
+    const test::ScratchDir scratch;
     const fs::path& dir = scratch.path;
     model::WallSet w;
     w.addPolyline("floor", {{-1.0, 0.1}, {1.0 / 3.0, 0.0}, {2.0, 0.1}}, false, 0, {});
@@ -108,7 +92,7 @@ TEST(Vtk, WallsRoundTripExactly) {
 }
 
 TEST(Vtk, PvdWriteLoadTruncate) {
-    const ScratchDir scratch;
+    const test::ScratchDir scratch;
     const fs::path& dir = scratch.path;
     const std::string path = (dir / "snapshots.pvd").string();
     PvdWriter pvd(path);
@@ -141,7 +125,7 @@ TEST(Vtk, PvdWriteLoadTruncate) {
 }
 
 TEST(Vtk, WriteSnapshotLaysOutFolder) {
-    const ScratchDir scratch;
+    const test::ScratchDir scratch;
     const fs::path& dir = scratch.path;
     model::WallSet w;
     w.addPolyline("floor", {{0, 0}, {1, 0}}, false, 0, {});
@@ -157,7 +141,7 @@ TEST(Vtk, WriteSnapshotLaysOutFolder) {
 }
 
 TEST(Vtk, MalformedInputThrowsWithFileName) {
-    const ScratchDir scratch;
+    const test::ScratchDir scratch;
     const fs::path& dir = scratch.path;
     const std::string good = (dir / "p.vtp").string();
     writeParticlesVtp(good, sampleParticles(), 0.0);
