@@ -24,8 +24,8 @@ while getopts "n:r:s:t:kh" opt; do
         s) SETTLE=$OPTARG ;;
         t) TSTEPS=$OPTARG ;;
         k) KEEP=1 ;;
-        h) sed -n '2,17p' "$0"; exit 0 ;;
-        *) sed -n '2,17p' "$0" >&2; exit 2 ;;
+        h) sed -n '2,16p' "$0"; exit 0 ;;
+        *) sed -n '2,16p' "$0" >&2; exit 2 ;;
     esac
 done
 for v in "$NX" "$REPEATS" "$SETTLE" "$TSTEPS"; do

@@ -2,6 +2,7 @@
 // Google Benchmark micro-benchmarks of the DEM engine (see bench/README.md):
 //   BM_NeighborRebuild/<broad phase>/N  one full neighbour-list rebuild (broad phase + history
 //                                        sync) on a random polydisperse set of N disks;
+//   BM_FindPairs/<broad phase>/N         the broad phase alone on the same set;
 //   BM_WorldStep/N                       one World::step on a settled-ish bed of N disks.
 // items/s is particles per second of one rebuild, or particle-steps/s for the step.
 #include <benchmark/benchmark.h>
@@ -104,6 +105,25 @@ void BM_NeighborRebuild(benchmark::State& state, const std::string& broadName) {
 BENCHMARK_CAPTURE(BM_NeighborRebuild, cell_grid, std::string("cell_grid"))
     ->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_NeighborRebuild, brute_force, std::string("brute_force"))
+    ->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
+
+/// The broad phase alone (BroadPhase::findPairs), to separate it from the history sync.
+void BM_FindPairs(benchmark::State& state, const std::string& broadName) {
+    const std::int64_t n = state.range(0);
+    const dem::World& world = randomSet(n);
+    auto broad = dem::makeBroadPhase(broadName);
+    std::vector<std::uint64_t> pairs;
+    for (auto _ : state) {
+        broad->findPairs(world.store(), world.config().skin, pairs);
+        benchmark::DoNotOptimize(pairs.data());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(state.iterations() * n);
+    state.counters["pairs/particle"] = static_cast<double>(pairs.size()) / static_cast<double>(n);
+}
+BENCHMARK_CAPTURE(BM_FindPairs, cell_grid, std::string("cell_grid"))
+    ->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_FindPairs, brute_force, std::string("brute_force"))
     ->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
 
 /// A settled-ish bed: NX x NX disks on a hexagonal lattice of spacing 1.0 with radii uniform in

@@ -23,8 +23,8 @@ while getopts "N:w:s:kh" opt; do
         w) WARMUP=$OPTARG ;;
         s) STEPS=$OPTARG ;;
         k) KEEP=1 ;;
-        h) sed -n '2,17p' "$0"; exit 0 ;;
-        *) sed -n '2,17p' "$0" >&2; exit 2 ;;
+        h) sed -n '2,16p' "$0"; exit 0 ;;
+        *) sed -n '2,16p' "$0" >&2; exit 2 ;;
     esac
 done
 for v in $SIZES "$WARMUP" "$STEPS"; do

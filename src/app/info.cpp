@@ -62,9 +62,8 @@ int infoCommand(const std::string& scenePath, const std::vector<io::Override>& o
 std::string helpText(const std::string& topic) {
     if (topic == "laws") {
         std::string s = "Contact laws ([[contact]] keys normal, damping, tangential and their parameters):\n";
-        const char* axisNames[] = {"normal", "damping", "tangential"};
         for (const auto& e : dem::lawRegistry()) {
-            s += fmt::format("\n  {} = \"{}\": {}\n", axisNames[static_cast<int>(e.axis)], e.keyword, e.doc);
+            s += fmt::format("\n  {} = \"{}\": {}\n", dem::axisKey(e.axis), e.keyword, e.doc);
             for (const auto& p : e.params)
                 s += fmt::format("      {:<10} [{}] {}; allowed {}; default {}\n", p.key, p.unit, p.doc, p.rangeText(),
                                  p.defaultText);

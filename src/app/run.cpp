@@ -128,12 +128,13 @@ std::string describeStatus(std::uint32_t status, const dem::World& world) {
 int runCommand(const RunOptions& opt) {
     const double startWall = wallSeconds();
     const model::SceneDef scene = io::readScene(opt.scene, opt.overrides);  // SceneError -> exit 2 in main
-    const io::ValidatedScene valid = io::validate(scene);
+    io::ValidatedScene valid = io::validate(scene);
     for (const auto& w : valid.warnings) fmt::print(stderr, "warning: {}\n", w);
 
     const std::string dir = !opt.outDir.empty() ? opt.outDir : (!opt.resumeDir.empty() ? opt.resumeDir : defaultOutDir(opt.scene));
     fs::create_directories(dir);
     dem::World world = dem::makeWorld(scene, valid.initial);
+    valid.initial = {};  // the world holds the particles now; free the generated copy
     const io::CheckpointHeader header{scene.dem.dt, world.store().size(), world.walls().segments.size()};
     io::OutputCounters counters;
     const bool resumed = !opt.resumeDir.empty();

@@ -112,6 +112,7 @@ WorldConfig makeWorldConfig(const model::SceneDef& scene, Real maxRadius) {
     c.skin = scene.dem.skin >= 0 ? scene.dem.skin : 0.2 * maxRadius;
     c.integrator = scene.dem.integrator;
     c.broadPhase = scene.dem.broadPhase;
+    c.sortEveryRebuilds = static_cast<int>(scene.dem.sortEvery);
     for (const auto& w : scene.dem.damping) {
         DampingWindow d;
         d.gamma = w.gamma;

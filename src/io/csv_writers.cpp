@@ -52,12 +52,18 @@ void writeFinalCsv(const std::string& path, const model::ParticleStore& s, const
     std::vector<std::size_t> order(s.size());
     std::iota(order.begin(), order.end(), 0);
     std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return s.id[a] < s.id[b]; });
-    std::string text = "id,shape,x,y,vx,vy,angle,omega,radius,mass,material\n";
+    // Streamed row by row (a 1e6-particle file is ~200 MB), then renamed into place.
+    const std::string tmp = path + ".tmp";
+    std::FILE* f = std::fopen(tmp.c_str(), "w");
+    if (!f) throw std::runtime_error("cannot write " + tmp);
+    fmt::print(f, "id,shape,x,y,vx,vy,angle,omega,radius,mass,material\n");
     for (const std::size_t i : order)
-        text += fmt::format("{},disk,{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{}\n", s.id[i], s.x[i],
-                            s.y[i], s.vx[i], s.vy[i], s.angle[i], s.omega[i], s.radius[i], s.mass[i],
-                            s.material[i] < materialNames.size() ? materialNames[s.material[i]] : "?");
-    writeFileAtomically(path, text);
+        fmt::print(f, "{},disk,{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{}\n", s.id[i], s.x[i], s.y[i],
+                   s.vx[i], s.vy[i], s.angle[i], s.omega[i], s.radius[i], s.mass[i],
+                   s.material[i] < materialNames.size() ? materialNames[s.material[i]] : "?");
+    const bool ok = std::ferror(f) == 0;
+    if (std::fclose(f) != 0 || !ok) throw std::runtime_error("write failed: " + tmp);
+    std::filesystem::rename(tmp, path);
 }
 
 void writeFileAtomically(const std::string& path, const std::string& text) {

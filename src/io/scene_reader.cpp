@@ -227,6 +227,7 @@ void readDem(TableReader& r, model::DemDef& dem) {
     r.string("broad_phase", dem.broadPhase);
     r.number("skin", dem.skin);
     r.string("mass_model", dem.massModel);
+    r.integer("sort_every", dem.sortEvery);
     r.vec2("gravity", dem.gravity);
     forEachTable(r, "damping", [&](TableReader& d, std::size_t) {
         model::DampingWindowDef w;

@@ -75,6 +75,8 @@ void checkStatic(const model::SceneDef& sc, Checker& c, const std::vector<std::s
     c.oneOf(sc.dem.loc, "dem.integrator", sc.dem.integrator, dem::integratorNames());
     c.oneOf(sc.dem.loc, "dem.broad_phase", sc.dem.broadPhase, dem::broadPhaseNames());
     c.oneOf(sc.dem.loc, "dem.mass_model", sc.dem.massModel, {"disk"});
+    if (sc.dem.sortEvery < 0 || sc.dem.sortEvery > 1000000)
+        d.error(sc.dem.loc, "dem.sort_every", fmt::format("must be in [0, 1000000] (0: never), got {}", sc.dem.sortEvery));
     if (sc.dem.skin != -1) c.nonNegative(sc.dem.loc, "dem.skin", sc.dem.skin, "m");
     for (std::size_t k = 0; k < sc.dem.damping.size(); ++k) {
         const auto& w = sc.dem.damping[k];

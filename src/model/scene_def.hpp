@@ -39,6 +39,7 @@ struct DemDef {
     std::string broadPhase = "cell_grid"; ///< "cell_grid" | "brute_force"
     Real skin = -1;                       ///< [m] neighbour-list skin; <0: 0.2 * largest radius
     std::string massModel = "disk";       ///< "disk": areal density, m = rho pi r^2, I = m r^2/2
+    std::int64_t sortEvery = 16;          ///< re-sort slots spatially every k-th rebuild (0: never)
     Vec2 gravity{0, 0};                   ///< [m/s^2]
     std::vector<DampingWindowDef> damping;
     SourceLoc loc;
