@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
-# Size scaling of granulab on the disk-bed workload (examples/bench/disk_bed.toml): cost per
-# particle-step, engine bytes per particle and peak RSS per disk for N = 1e4, 1e5, 1e6.
-# Each size is NX x NY disks (NX = round(sqrt N), NY = round(N / NX)) on the same hexagonal
-# lattice and box as disk_bed.toml; the run is shortened to WARMUP steps of (damped) fall from
-# the lattice followed by a timed segment of STEPS steps (summary.json "benchmark"). VTK
-# snapshots are switched off (output.vtk=false) so the timed segment holds only the final
-# series row and checkpoint. See bench/README.md.
+# Size scaling of granulab on a dense static bed (the laws, walls, gravity and time step of
+# examples/bench/disk_bed.toml): cost per particle-step, engine bytes per particle and peak RSS
+# per disk for N = 1e4, 1e5, 1e6. Every size is a bed of the same height, NY = 100 rows of a
+# touching hexagonal packing (r = 0.5, spacing 1.0, so every disk starts in contact like a
+# settled bed), and NX = N / 100 columns: each disk sees the same pressure and contacts at every
+# N, so only the size changes. (A bed falling from the loose lattice has almost no contacts and a
+# square NX x NX bed is ten times taller at 1e6; neither measures what the settled bed costs.)
+# The run is WARMUP steps of damped settling, then a timed segment of STEPS steps (summary.json
+# "benchmark"). VTK snapshots are switched off (output.vtk=false). See bench/README.md.
 #
 # Usage: bench/scaling.sh [-N "10000 100000 1000000"] [-w WARMUP] [-s STEPS] [-k]
 #   -N SIZES   particle counts (default "10000 100000 1000000")
@@ -45,21 +47,23 @@ fi
 WORK=$(mktemp -d "${TMPDIR:-/tmp}/granulab_scaling.XXXXXX")
 [[ $KEEP == 1 ]] || trap 'rm -rf "$WORK"' EXIT
 
-echo "granulab scaling, disk-bed lattice: $WARMUP untimed + $STEPS timed steps per size ($GRANULAB)"
+echo "granulab scaling, dense static bed of 100 rows: $WARMUP untimed + $STEPS timed steps per size ($GRANULAB)"
 for n in $SIZES; do
     # geometry as in bench/disk_bed_vs_lammps.sh: lattice spacing 1.12, xmax = NX a + 0.3,
     # ymax = NY a sqrt(3)/2, side walls at x = 0 and W = NX a + 0.56 reaching 4 ymax (>= 400)
     read -r NX NY XMAX YMAX W WTOP T_BENCH T_END < <(python3 -c "
 import math
 n, w, s = $n, $WARMUP, $STEPS
-nx = max(1, round(math.sqrt(n))); ny = max(1, round(n / nx)); a = 1.12
-hf = ny * a * math.sqrt(3) / 2
-print(nx, ny, f'{nx*a+0.3:.10g} {hf:.10g} {nx*a+0.56:.10g} {max(400.0, 4*hf):.10g} {w*1e-4:.10g} {(w+s)*1e-4:.10g}')")
+ny = 100; nx = max(1, round(n / ny)); a = 1.0
+hf = 0.5 + (ny - 0.5) * a * math.sqrt(3) / 2
+print(nx, ny, f'{0.5+(nx-0.25)*a:.10g} {hf:.10g} {0.5+nx*a:.10g} {max(400.0, 4*hf):.10g} {w*1e-4:.10g} {(w+s)*1e-4:.10g}')")
     d="$WORK/n$n"
     echo "  N = $n ($NX x $NY) ..." >&2
     t0=$(date +%s.%N)
     "$GRANULAB" run "$SCENE" --out "$d" --quiet \
-        --set "block[0].region=[0.1,0.0,$XMAX,$YMAX]" \
+        --set block[0].spacing=1.0 --set block[0].radius=0.5 --set "block[0].origin=[0.5,0.5]" \
+        --set "block[0].region=[0.4,0.0,$XMAX,$YMAX]" --set block[0].temperature=0.0 \
+        --set "dem.damping[0].to=$T_BENCH" \
         --set "wall[0].points=[[0.0,$WTOP],[0.0,0.0],[$W,0.0],[$W,$WTOP]]" \
         --set "run.benchmark_from=$T_BENCH" --set "run.end_time=$T_END" \
         --set output.vtk=false ||

@@ -10,6 +10,7 @@
 #include "core/suggest.hpp"
 #include "dem/broad_phase.hpp"
 #include "dem/integrator.hpp"
+#include "geom/segment.hpp"
 
 namespace granulab::io {
 
@@ -139,30 +140,45 @@ void checkStatic(const model::SceneDef& sc, Checker& c, const std::vector<std::s
     c.nonNegative(sc.output.loc, "output.checkpoint_interval", sc.output.checkpointInterval, "s");
 }
 
-/// Start overlaps between particles (reports the first 10 with their origins).
-void checkOverlaps(const model::InitialParticles& init, Diagnostics& d) {
+/// Start overlaps between particles, and between particles and walls (reports the first 10).
+void checkOverlaps(const model::SceneDef& scene, const model::InitialParticles& init, Diagnostics& d) {
     model::ParticleStore s;
     s.reserve(init.particles.size());
     for (std::size_t k = 0; k < init.particles.size(); ++k) {
         const auto& p = init.particles[k];
         s.add(static_cast<ParticleId>(k), p.position, {}, 0, 0, p.radius, 1, 1, 0);
     }
+    std::size_t reported = 0;
+    const auto report = [&](const SourceLoc& loc, const std::string& message) {
+        if (reported == 10) d.error(loc, "particle", "... more overlaps not listed");
+        if (reported++ < 10) d.error(loc, "particle", message);
+    };
     std::vector<std::uint64_t> pairs;
     dem::CellGrid grid;
     grid.findPairs(s, 0.0, pairs);
-    std::size_t reported = 0;
     for (const auto key : pairs) {
         const auto i = dem::keyFirst(key), j = dem::keySecond(key);
         const Real dist = std::sqrt(norm2(init.particles[i].position - init.particles[j].position));
         const Real overlap = init.particles[i].radius + init.particles[j].radius - dist;
         if (overlap <= 1e-12 * (init.particles[i].radius + init.particles[j].radius)) continue;
-        if (reported++ == 10) {
-            d.error(init.origins[init.particles[i].origin], "particle", "... more overlapping particles not listed");
-            break;
-        }
-        d.error(init.origins[init.particles[i].origin], "particle",
-                fmt::format("particles {} and {} overlap by {:.4g} m at start (the other is defined at {})", i, j, overlap,
-                            init.origins[init.particles[j].origin].str()));
+        report(init.origins[init.particles[i].origin],
+               fmt::format("particles {} and {} overlap by {:.4g} m at start (the other is defined at {})", i, j, overlap,
+                           init.origins[init.particles[j].origin].str()));
+    }
+    model::WallSet walls;
+    for (const auto& w : scene.walls) walls.addPolyline(w.name, w.points, w.closed, 0, {});
+    grid.findWallPairs(s, walls, 0.0, pairs);
+    for (const auto key : pairs) {
+        const auto i = dem::keyFirst(key);
+        const auto& seg = walls.segments[dem::keySecond(key)];
+        const auto& p = init.particles[i];
+        const Vec2 q = seg.a + (seg.b - seg.a) * geom::closestParameter(seg.a, seg.b, p.position);
+        const Real overlap = p.radius - std::sqrt(norm2(p.position - q));
+        if (overlap <= 1e-12 * p.radius) continue;
+        report(init.origins[p.origin],
+               fmt::format("particle {} at ({:.6g}, {:.6g}) overlaps wall[{}] by {:.4g} m at start (the wall is defined at {}); "
+                           "block regions bound the particle centres, so keep them a radius away from walls",
+                           i, p.position.x, p.position.y, seg.wall, overlap, scene.walls[seg.wall].loc.str()));
     }
 }
 
@@ -202,7 +218,7 @@ ValidatedScene validate(const model::SceneDef& scene) {
                             fmt::format("no [[contact]] law for materials {}/{} (add one, or use \"*\")", names[m], names[o]));
         }
     }
-    checkOverlaps(out.initial, diags);
+    checkOverlaps(scene, out.initial, diags);
     diags.throwIfAny();
 
     out.advice = dem::adviseTimeStep(laws, names, minMass, usedByWalls);
