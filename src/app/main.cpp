@@ -68,6 +68,10 @@ int main(int argc, char** argv) {
             }
             return app::renderCommand(renderDir, width, renderQuiet);
         }
+        if (*help && !helpTopic.empty() && helpTopic != "laws") {
+            fmt::print(stderr, "granulab help: unknown topic '{}'; topics: laws\n", helpTopic);
+            return app::kExitBadInput;
+        }
         fmt::print("{}", app::helpText(*help ? helpTopic : ""));
         return 0;
     } catch (const SceneError& e) {

@@ -103,7 +103,7 @@ private:
     dem::Energies m_lastEnergy;
 };
 
-std::string describeStatus(std::uint32_t status, const dem::World& world) {
+std::string describeStatus(std::uint32_t status, const dem::World& world, const std::string& lastCheckpoint) {
     std::vector<std::string> why;
     if (status & dem::kStepNonFinite) why.push_back("a particle position or velocity became NaN/infinite");
     if (status & dem::kStepTunnelling)
@@ -119,7 +119,7 @@ std::string describeStatus(std::uint32_t status, const dem::World& world) {
     else
         s += "time step too large for the contact stiffness (see `granulab info` for the advised dt), "
              "or particles created overlapping";
-    s += ". The last good checkpoint is kept.";
+    s += ". " + lastCheckpoint;
     return s;
 }
 
@@ -152,7 +152,17 @@ int runCommand(const RunOptions& opt) {
     const std::int64_t seriesEvery = scene.output.seriesInterval > 0 ? stepsOf(scene.output.seriesInterval, dt)
                                                                       : std::max<std::int64_t>(1, endStep / 100);
     const std::int64_t snapEvery = scene.output.snapshotInterval > 0 ? stepsOf(scene.output.snapshotInterval, dt) : endStep;
-    const std::int64_t checkpointEvery = scene.output.checkpointInterval > 0 ? stepsOf(scene.output.checkpointInterval, dt) : 0;
+    // Default: ten checkpoints over the run, so that a failing run keeps a recent good state.
+    const std::int64_t checkpointEvery = scene.output.checkpointInterval > 0 ? stepsOf(scene.output.checkpointInterval, dt)
+                                                                              : std::max<std::int64_t>(1, endStep / 10);
+    if (resumed && endStep <= world.stepIndex())
+        throw SceneError(makeDiagnostic("--set run.end_time", 0, "run.end_time",
+                                        fmt::format("the checkpoint in {} is at t = {:.6g} s; to continue, run.end_time must be "
+                                                    "later (got {:.6g} s)",
+                                                    opt.resumeDir, world.time(), scene.run.endTime)));
+    std::string lastCheckpoint = resumed ? fmt::format("The last good checkpoint (t = {:.6g} s) is kept in {}/checkpoint.bin.",
+                                                       world.time(), opt.resumeDir)
+                                         : "No checkpoint was written before the failure (see output.checkpoint_interval).";
     const std::int64_t benchStep = scene.run.benchmarkFrom >= 0 ? std::llround(scene.run.benchmarkFrom / dt) : -1;
 
     Outputs out(dir, scene, world, resumed ? world.time() : -1.0);
@@ -193,8 +203,9 @@ int runCommand(const RunOptions& opt) {
             }
             if (doSnap) out.snapshot(world, counters);
             if (doCheckpoint) {
-                counters.wallTimeSoFar += 0;  // kept for future use
                 io::writeCheckpoint(dir, header, counters, world);
+                lastCheckpoint = fmt::format("The last good checkpoint (t = {:.6g} s) is kept in {}/checkpoint.bin.",
+                                             world.time(), dir);
             }
             outputSeconds += wallSeconds() - t0;
         }
@@ -215,7 +226,7 @@ int runCommand(const RunOptions& opt) {
     js["version"] = kVersion;
     js["scene"] = opt.scene;
     js["status"] = ok ? "completed" : "unstable";
-    if (!ok) js["diagnosis"] = describeStatus(status, world);
+    if (!ok) js["diagnosis"] = describeStatus(status, world, lastCheckpoint);
     js["resumed_from_step"] = resumed ? loopStartStep : 0;
     js["particles"] = world.store().size();
     js["wall_segments"] = world.walls().segments.size();
@@ -264,16 +275,21 @@ int runCommand(const RunOptions& opt) {
     io::writeFileAtomically(dir + "/summary.json", js.dump(2) + "\n");
 
     if (!ok) {
-        fmt::print(stderr, "error: {}\n", describeStatus(status, world));
+        fmt::print(stderr, "error: {}\n", describeStatus(status, world, lastCheckpoint));
         return kExitUnstable;
     }
     if (!opt.quiet) {
         fmt::print(stderr, "done: {} steps in {:.3g} s ({:.3g} particle-steps/s)\n", steps, loopSeconds,
                    js["particle_steps_per_s"].get<double>());
-        fmt::print("results in {}/ : summary.json, series.csv, final.csv, snapshots.pvd, checkpoint.bin\n", dir);
-        fmt::print("view in ParaView: paraview {}/snapshots.pvd  (apply Glyph, type Sphere, scale by 'radius', factor 2)\n",
-                   dir);
-        fmt::print("pictures:         granulab render {} --png\n", dir);
+        if (scene.output.vtk) {
+            fmt::print("results in {}/ : summary.json, series.csv, final.csv, snapshots.pvd, checkpoint.bin\n", dir);
+            fmt::print("view in ParaView: paraview {}/snapshots.pvd  (Glyph filter: type Sphere, scale array 'radius', "
+                       "factor 2, glyph mode 'All Points')\n",
+                       dir);
+            fmt::print("pictures:         granulab render {} --png\n", dir);
+        } else {
+            fmt::print("results in {}/ : summary.json, series.csv, final.csv, checkpoint.bin (VTK output off)\n", dir);
+        }
     }
     return kExitOk;
 }

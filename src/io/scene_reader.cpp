@@ -215,14 +215,16 @@ void readRun(TableReader& r, model::RunDef& run) {
     if (r.integer("dimension", dim)) run.dimension = static_cast<int>(dim);
     std::int64_t seed = static_cast<std::int64_t>(run.seed);
     if (r.integer("seed", seed)) run.seed = static_cast<std::uint64_t>(seed);
-    r.number("end_time", run.endTime);
+    if (!r.number("end_time", run.endTime) && !r.table().get("end_time"))
+        r.diags().error(run.loc, "run.end_time", "missing: simulated end time [s], allowed (0, inf)");
     r.number("benchmark_from", run.benchmarkFrom);
     r.string("title", run.title);
 }
 
 void readDem(TableReader& r, model::DemDef& dem) {
     dem.loc = r.loc();
-    r.number("dt", dem.dt);
+    if (!r.number("dt", dem.dt) && !r.table().get("dt"))
+        r.diags().error(dem.loc, "dem.dt", "missing: time step [s], allowed (0, inf); `granulab info` advises one");
     r.string("integrator", dem.integrator);
     r.string("broad_phase", dem.broadPhase);
     r.number("skin", dem.skin);
@@ -300,6 +302,7 @@ void readContact(TableReader& r, model::ContactDef& c) {
         p.loc = locOf(v, r.file());
         if (v.is_boolean()) {
             p.value = v.value<bool>().value_or(false) ? 1.0 : 0.0;
+            p.isBool = true;
         } else if (v.is_number()) {
             p.value = v.value<double>().value_or(0.0);
             if (!std::isfinite(p.value)) {
@@ -472,6 +475,7 @@ SceneDef buildScene(toml::table& root, const std::string& path, const std::vecto
     withTable(r, "run", [&](TableReader& t) { readRun(t, scene.run); });
     if (!root.get("run")) diags.error({path, 1, 1}, "run", "missing section [run] (needs at least end_time)");
     withTable(r, "dem", [&](TableReader& t) { readDem(t, scene.dem); });
+    if (!root.get("dem")) diags.error({path, 1, 1}, "dem", "missing section [dem] (needs at least dt)");
     forEachTable(r, "material", [&](TableReader& t, std::size_t) {
         model::MaterialDef m;
         m.loc = t.loc();

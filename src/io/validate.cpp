@@ -88,6 +88,9 @@ void checkStatic(const model::SceneDef& sc, Checker& c, const std::vector<std::s
     }
     for (std::size_t k = 0; k < sc.materials.size(); ++k) {
         const auto& m = sc.materials[k];
+        if (m.name.empty() || m.name == "*")
+            d.error(m.loc, fmt::format("material[{}].name", k),
+                    fmt::format("'{}' cannot name a material (\"*\" is the wildcard of [[contact]] materials)", m.name));
         for (std::size_t j = 0; j < k; ++j)
             if (sc.materials[j].name == m.name)
                 d.error(m.loc, fmt::format("material[{}].name", k), fmt::format("duplicate material name '{}'", m.name));
@@ -212,7 +215,8 @@ ValidatedScene validate(const model::SceneDef& scene) {
                         fmt::format("material '{}' is used by particles and needs density > 0 [kg/m^2], got {}", names[m],
                                     scene.materials[m].density));
         for (std::size_t o = 0; o < nm; ++o) {
-            const bool occurs = usedByParticles[m] && (usedByParticles[o] || usedByWalls[o]);
+            // Particle pairs are unordered (report m <= o once); particle-wall pairs are ordered.
+            const bool occurs = usedByParticles[m] && ((usedByParticles[o] && o >= m) || usedByWalls[o]);
             if (occurs && !laws.has(static_cast<std::uint32_t>(m), static_cast<std::uint32_t>(o)))
                 diags.error({scene.path, 0, 0}, "contact",
                             fmt::format("no [[contact]] law for materials {}/{} (add one, or use \"*\")", names[m], names[o]));

@@ -54,6 +54,7 @@ struct MaterialDef {
 /// One numeric or boolean parameter of a contact law, with where it was written.
 struct LawParamDef {
     Real value = 0;
+    bool isBool = false;  ///< written as true/false
     SourceLoc loc;
 };
 

@@ -64,6 +64,11 @@ TEST(Cli, BadInputTable) {
         {"bad_set", kGood, "--set dem.dt", {"expected key=value"}},
         {"set_unknown_key", kGood, "--set dem.tdt=1", {"--set", "dem.tdt", "unknown key", "did you mean 'dt'"}},
         {"no_checkpoint", kGood, "--resume nowhere", {"nowhere", "no checkpoint"}},
+        {"missing_dt", replace(kGood, "dt = 1e-5\n", ""), "", {"dem.dt", "missing"}},
+        {"wildcard_material", replace(kGood, "name = \"g\"", "name = \"*\""), "", {"material[0].name", "wildcard"}},
+        {"bool_for_number", replace(kGood, "kn = 1e4", "kn = true"), "", {"contact[0].kn", "expects a number"}},
+        {"particle_in_wall", kGood + std::string("[[wall]]\npoints = [[0.005, -1.0], [0.005, 1.0]]\nmaterial = \"g\"\n"), "",
+         {"overlaps wall[0]", "bad.toml:11", "wall is defined at bad.toml:19"}},
     };
     for (const auto& c : cases) {
         SCOPED_TRACE(c.name);

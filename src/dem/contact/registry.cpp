@@ -120,6 +120,11 @@ ContactLaw buildContactLaw(const model::ContactDef& def, const std::string& ctx,
                                         def.tangential, didYouMean(key, allowedNames), joinList(allowedNames)));
             continue;
         }
+        if (spec->isBool != value.isBool) {
+            diags.error(value.loc, ctx + "." + key,
+                        fmt::format("{} expects {}", key, spec->isBool ? "true or false" : "a number [" + spec->unit + "]"));
+            continue;
+        }
         const Real v = value.value;
         const bool below = spec->minExclusive ? !(v > spec->min) : !(v >= spec->min);
         if (!std::isfinite(v) || below || v > spec->max)
