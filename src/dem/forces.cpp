@@ -34,6 +34,17 @@ void visitForm(const ContactLaw& rep, Fn&& fn) {
         rep.normal, rep.damping, rep.tangential);
 }
 
+/// Calls fn(N*, D*, T*, begin, end) for every non-empty bucket of `list` with the concrete axis
+/// types of the bucket's law form: the one dispatch per bucket.
+template <class Fn>
+void forEachBucket(const ContactList& list, const LawTable& laws, Fn&& fn) {
+    for (std::uint32_t f = 0; f + 1 < list.bucketStart.size(); ++f) {
+        const auto b = list.bucketStart[f], e = list.bucketStart[f + 1];
+        if (b == e) continue;
+        visitForm(laws.formRepresentative(f), [&](auto* nT, auto* dT, auto* tT) { fn(nT, dT, tT, b, e); });
+    }
+}
+
 /// Disk-disk contacts of one bucket. n points from i to j; t = perp(n).
 /// Tangential displacement [m] of the contact points during the step, from the drift velocities.
 inline Real tangentialIncrement(const DriftVelocities& d, std::uint32_t i, std::uint32_t j, Real ri, Real rj,
@@ -175,26 +186,18 @@ void computeForces(model::ParticleStore& s, const model::WallSet& walls, Neighbo
     }
     stats = ForceStats{};
     for (auto& w : wallForce) w = Vec2{};
-    for (std::uint32_t f = 0; f + 1 < list.pairs.bucketStart.size(); ++f) {
-        const auto b = list.pairs.bucketStart[f], e = list.pairs.bucketStart[f + 1];
-        if (b == e) continue;
-        visitForm(laws.formRepresentative(f), [&](auto* nT, auto* dT, auto* tT) {
-            using N = std::remove_pointer_t<decltype(nT)>;
-            using D = std::remove_pointer_t<decltype(dT)>;
-            using T = std::remove_pointer_t<decltype(tT)>;
-            diskPairs<N, D, T>(s, list.pairs, b, e, laws, drift, dt, stats);
-        });
-    }
-    for (std::uint32_t f = 0; f + 1 < list.wallPairs.bucketStart.size(); ++f) {
-        const auto b = list.wallPairs.bucketStart[f], e = list.wallPairs.bucketStart[f + 1];
-        if (b == e) continue;
-        visitForm(laws.formRepresentative(f), [&](auto* nT, auto* dT, auto* tT) {
-            using N = std::remove_pointer_t<decltype(nT)>;
-            using D = std::remove_pointer_t<decltype(dT)>;
-            using T = std::remove_pointer_t<decltype(tT)>;
-            diskWalls<N, D, T>(s, walls, list.wallPairs, b, e, laws, drift, dt, stats, wallForce);
-        });
-    }
+    forEachBucket(list.pairs, laws, [&](auto* nT, auto* dT, auto* tT, std::uint32_t b, std::uint32_t e) {
+        using N = std::remove_pointer_t<decltype(nT)>;
+        using D = std::remove_pointer_t<decltype(dT)>;
+        using T = std::remove_pointer_t<decltype(tT)>;
+        diskPairs<N, D, T>(s, list.pairs, b, e, laws, drift, dt, stats);
+    });
+    forEachBucket(list.wallPairs, laws, [&](auto* nT, auto* dT, auto* tT, std::uint32_t b, std::uint32_t e) {
+        using N = std::remove_pointer_t<decltype(nT)>;
+        using D = std::remove_pointer_t<decltype(dT)>;
+        using T = std::remove_pointer_t<decltype(tT)>;
+        diskWalls<N, D, T>(s, walls, list.wallPairs, b, e, laws, drift, dt, stats, wallForce);
+    });
 }
 
 Real contactEnergy(const model::ParticleStore& s, const model::WallSet& walls, const NeighborList& list,
@@ -202,33 +205,31 @@ Real contactEnergy(const model::ParticleStore& s, const model::WallSet& walls, c
     Real energy = 0;
     const std::uint32_t nm = laws.materialCount();
     const auto eval = [&](const ContactList& cl, bool wall) {
-        for (std::uint32_t f = 0; f + 1 < cl.bucketStart.size(); ++f) {
-            visitForm(laws.formRepresentative(f), [&](auto* nT, auto* dT, auto* tT) {
-                using N = std::remove_pointer_t<decltype(nT)>;
-                using D = std::remove_pointer_t<decltype(dT)>;
-                using T = std::remove_pointer_t<decltype(tT)>;
-                for (std::uint32_t p = cl.bucketStart[f]; p < cl.bucketStart[f + 1]; ++p) {
-                    const std::uint32_t i = cl.first[p];
-                    Real overlap;
-                    std::uint32_t otherMat;
-                    if (wall) {
-                        const auto& seg = walls.segments[cl.second[p]];
-                        const auto g = geom::diskSegmentContact({s.x[i], s.y[i]}, s.radius[i], seg.a, seg.b,
-                                                                seg.startShared, seg.endShared, seg.prevDirection);
-                        overlap = g.touching ? g.overlap : 0;
-                        otherMat = seg.material;
-                    } else {
-                        const std::uint32_t j = cl.second[p];
-                        const Real dx = s.x[j] - s.x[i], dy = s.y[j] - s.y[i];
-                        overlap = s.radius[i] + s.radius[j] - std::sqrt(dx * dx + dy * dy);
-                        otherMat = s.material[j];
-                    }
-                    if (overlap <= 0) continue;
-                    const auto law = resolve<N, D, T>(laws.laws()[static_cast<std::size_t>(s.material[i]) * nm + otherMat]);
-                    energy += dem::contactEnergy(law, overlap, cl.xi[p]);
+        forEachBucket(cl, laws, [&](auto* nT, auto* dT, auto* tT, std::uint32_t b, std::uint32_t e) {
+            using N = std::remove_pointer_t<decltype(nT)>;
+            using D = std::remove_pointer_t<decltype(dT)>;
+            using T = std::remove_pointer_t<decltype(tT)>;
+            for (std::uint32_t p = b; p < e; ++p) {
+                const std::uint32_t i = cl.first[p];
+                Real overlap;
+                std::uint32_t otherMat;
+                if (wall) {
+                    const auto& seg = walls.segments[cl.second[p]];
+                    const auto g = geom::diskSegmentContact({s.x[i], s.y[i]}, s.radius[i], seg.a, seg.b, seg.startShared,
+                                                            seg.endShared, seg.prevDirection);
+                    overlap = g.touching ? g.overlap : 0;
+                    otherMat = seg.material;
+                } else {
+                    const std::uint32_t j = cl.second[p];
+                    const Real dx = s.x[j] - s.x[i], dy = s.y[j] - s.y[i];
+                    overlap = s.radius[i] + s.radius[j] - std::sqrt(dx * dx + dy * dy);
+                    otherMat = s.material[j];
                 }
-            });
-        }
+                if (overlap <= 0) continue;
+                const auto law = resolve<N, D, T>(laws.laws()[static_cast<std::size_t>(s.material[i]) * nm + otherMat]);
+                energy += dem::contactEnergy(law, overlap, cl.xi[p]);
+            }
+        });
     };
     eval(list.pairs, false);
     eval(list.wallPairs, true);
