@@ -51,10 +51,11 @@ int infoCommand(const std::string& scenePath, const std::vector<io::Override>& o
                v.advice.contactTime / scene.dem.dt);
     fmt::print("advised dt   {:.4g} s (contact time / 50); stability limit {:.4g} s\n", v.advice.advisedDt,
                v.advice.stabilityLimit);
-    // Estimate: store + ~3 candidate pairs per disk (16 B each) + reference positions + grid.
-    const double perDisk = static_cast<double>(model::ParticleStore::kBytesPerParticle) + 3 * 16 + 16 + 12;
-    fmt::print("memory       ~{:.3g} MB ({:.0f} bytes per disk, estimate)\n", perDisk * static_cast<double>(ps.size()) / 1e6,
-               perDisk);
+    // Estimate: particle store + Verlet half-step velocities (24 B) + neighbour-list reference
+    // positions (16 B) + cell grid (12 B) + ~3 candidate pairs per disk (16 B each, history included).
+    const double perDisk = static_cast<double>(model::ParticleStore::kBytesPerParticle) + 24 + 16 + 12 + 3 * 16;
+    fmt::print("memory       ~{:.3g} MB ({:.0f} bytes per disk, estimate; summary.json reports the measured value)\n",
+               perDisk * static_cast<double>(ps.size()) / 1e6, perDisk);
     for (const auto& w : v.warnings) fmt::print("warning      {}\n", w);
     return 0;
 }

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fmt/format.h>
 
 #include "../support.hpp"
@@ -138,6 +139,9 @@ TEST_P(LinearCollision, RestitutionAndContactTimeMatchClosedForm) {
         const Closed ref = closedForm(meff, kn, c.c);
         const Measured got = collide(c.toml, wall, ref.tc / 50);
         SCOPED_TRACE(c.toml);
+        std::printf("%s %-34s e %.6f (closed %.6f, rel %.1e)  tc %.6g (closed %.6g, rel %.1e)\n", wall ? "wall" : "pair",
+                    c.toml.substr(0, c.toml.find('\n')).c_str(), got.e, ref.e, std::abs(got.e - ref.e) / ref.e, got.tc, ref.tc,
+                    std::abs(got.tc - ref.tc) / ref.tc);
         EXPECT_LT(std::abs(got.e - ref.e) / ref.e, 1e-3) << "e measured " << got.e << " expected " << ref.e;
         EXPECT_LT(std::abs(got.tc - ref.tc) / ref.tc, 1e-3) << "tc measured " << got.tc << " expected " << ref.tc;
     }

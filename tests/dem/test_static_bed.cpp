@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "../support.hpp"
 
@@ -67,6 +68,7 @@ material = "side"
     const auto e = w.energies();
     EXPECT_LT(e.kinetic, 1e-6 * weight);  // static
     const Real floor = -w.wallForce()[0].y;  // particles push the floor down
+    std::printf("floor force / weight = %.6f, kinetic energy / weight = %.2e\n", floor / weight, e.kinetic / weight);
     EXPECT_NEAR(floor / weight, 1.0, 0.005) << "floor " << floor << " weight " << weight;
     // Side walls are frictionless: they carry no vertical load.
     EXPECT_NEAR(w.wallForce()[1].y, 0.0, 1e-9 * weight);
