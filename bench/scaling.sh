@@ -66,7 +66,7 @@ print(nx, ny, f'{0.5+(nx-0.25)*a:.10g} {hf:.10g} {0.5+nx*a:.10g} {max(400.0, 4*h
         --set "dem.damping[0].to=$T_BENCH" \
         --set "wall[0].points=[[0.0,$WTOP],[0.0,0.0],[$W,0.0],[$W,$WTOP]]" \
         --set "run.benchmark_from=$T_BENCH" --set "run.end_time=$T_END" \
-        --set output.vtk=false ||
+        --set output.vtk=false --set output.checkpoint_interval=$T_END ||
         { echo "error: granulab failed for N = $n (output in $d)" >&2; KEEP=1; trap - EXIT; exit 1; }
     t1=$(date +%s.%N)
     echo "$n $NX $NY $t0 $t1" >> "$WORK/runs.txt"

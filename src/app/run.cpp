@@ -156,7 +156,7 @@ int runCommand(const RunOptions& opt) {
     const std::int64_t checkpointEvery = scene.output.checkpointInterval > 0 ? stepsOf(scene.output.checkpointInterval, dt)
                                                                               : std::max<std::int64_t>(1, endStep / 10);
     if (resumed && endStep <= world.stepIndex())
-        throw SceneError(makeDiagnostic("--set run.end_time", 0, "run.end_time",
+        throw SceneError(makeDiagnostic(scene.run.loc.file, scene.run.loc.line, "run.end_time",
                                         fmt::format("the checkpoint in {} is at t = {:.6g} s; to continue, run.end_time must be "
                                                     "later (got {:.6g} s)",
                                                     opt.resumeDir, world.time(), scene.run.endTime)));

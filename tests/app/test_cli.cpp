@@ -64,6 +64,8 @@ TEST(Cli, BadInputTable) {
         {"bad_set", kGood, "--set dem.dt", {"expected key=value"}},
         {"set_unknown_key", kGood, "--set dem.tdt=1", {"--set", "dem.tdt", "unknown key", "did you mean 'dt'"}},
         {"no_checkpoint", kGood, "--resume nowhere", {"nowhere", "no checkpoint"}},
+        {"zero_spacing", kGood + std::string("[[block]]\nregion = [1.0, 1.0, 2.0, 2.0]\nradius = 0.01\nmaterial = \"g\"\n"), "",
+         {"block[0].spacing", "must be > 0"}},
         {"missing_dt", replace(kGood, "dt = 1e-5\n", ""), "", {"dem.dt", "missing"}},
         {"wildcard_material", replace(kGood, "name = \"g\"", "name = \"*\""), "", {"material[0].name", "wildcard"}},
         {"bool_for_number", replace(kGood, "kn = 1e4", "kn = true"), "", {"contact[0].kn", "expects a number"}},
