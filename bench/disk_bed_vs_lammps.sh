@@ -12,7 +12,7 @@
 #   -t TSTEPS   timed steps (default 10000, as the peer file)
 #   -k          keep the work directory (printed at the end)
 # Env: PEER_DIR (folder of in.disk2d_bed.lmp; default <repo>/../shared/peers),
-#      GRANULAB (binary; default <repo>/build-bench/granulab), LMP (default lmp),
+#      GRANULAB (binary; default <repo>/build/granulab, built by scripts/setup.sh), LMP (default lmp),
 #      RESULTS_DIR (default <repo>/bench/results/<hostname>).
 set -euo pipefail
 
@@ -37,13 +37,13 @@ PEER_DIR=${PEER_DIR:-"$ROOT/../shared/peers"}
 PEER="$PEER_DIR/in.disk2d_bed.lmp"
 WRAP="$ROOT/bench/lammps/disk_bed_wrap.lmp"
 SCENE="$ROOT/examples/bench/disk_bed.toml"
-GRANULAB=${GRANULAB:-"$ROOT/build-bench/granulab"}
+GRANULAB=${GRANULAB:-"$ROOT/build/granulab"}
 LMP=${LMP:-lmp}
 HOST=$(hostname)
 RESULTS_DIR=${RESULTS_DIR:-"$ROOT/bench/results/$HOST"}
 
 [[ -f $PEER ]] || { echo "error: peer input not found: $PEER (set PEER_DIR)" >&2; exit 1; }
-[[ -x $GRANULAB ]] || { echo "error: granulab binary not found: $GRANULAB (build it: cmake -S $ROOT -B $ROOT/build-bench -G Ninja && ninja -C $ROOT/build-bench granulab, or set GRANULAB)" >&2; exit 1; }
+[[ -x $GRANULAB ]] || { echo "error: granulab binary not found: $GRANULAB (build it with scripts/setup.sh, or set GRANULAB)" >&2; exit 1; }
 command -v "$LMP" >/dev/null || { echo "error: LAMMPS executable '$LMP' not found (set LMP)" >&2; exit 1; }
 if busy=$(pgrep -af 'granulab_tests|granulab_bench|granulab run|lmp -in' 2>/dev/null) && [[ -n $busy ]]; then
     echo "warning: other jobs are running; timings may be disturbed:" >&2

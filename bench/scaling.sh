@@ -14,7 +14,7 @@
 #   -w WARMUP  untimed steps before the timed segment (default 500)
 #   -s STEPS   timed steps (default 2000)
 #   -k         keep the work directory
-# Env: GRANULAB (binary; default <repo>/build-bench/granulab), RESULTS_DIR
+# Env: GRANULAB (binary; default <repo>/build/granulab, built by scripts/setup.sh), RESULTS_DIR
 #      (default <repo>/bench/results/<hostname>).
 set -euo pipefail
 
@@ -35,10 +35,10 @@ done
 
 ROOT=$(git -C "$(dirname "$0")" rev-parse --show-toplevel)
 SCENE="$ROOT/examples/bench/disk_bed.toml"
-GRANULAB=${GRANULAB:-"$ROOT/build-bench/granulab"}
+GRANULAB=${GRANULAB:-"$ROOT/build/granulab"}
 HOST=$(hostname)
 RESULTS_DIR=${RESULTS_DIR:-"$ROOT/bench/results/$HOST"}
-[[ -x $GRANULAB ]] || { echo "error: granulab binary not found: $GRANULAB (build it: cmake -S $ROOT -B $ROOT/build-bench -G Ninja && ninja -C $ROOT/build-bench granulab, or set GRANULAB)" >&2; exit 1; }
+[[ -x $GRANULAB ]] || { echo "error: granulab binary not found: $GRANULAB (build it with scripts/setup.sh, or set GRANULAB)" >&2; exit 1; }
 if busy=$(pgrep -af 'granulab_tests|granulab_bench|granulab run|lmp -in' 2>/dev/null) && [[ -n $busy ]]; then
     echo "warning: other jobs are running; timings may be disturbed:" >&2
     echo "$busy" | cut -c1-120 >&2
