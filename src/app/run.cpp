@@ -160,8 +160,10 @@ int runCommand(const RunOptions& opt) {
                                         fmt::format("the checkpoint in {} is at t = {:.6g} s; to continue, run.end_time must be "
                                                     "later (got {:.6g} s)",
                                                     opt.resumeDir, world.time(), scene.run.endTime)));
-    std::string lastCheckpoint = resumed ? fmt::format("The last good checkpoint (t = {:.6g} s) is kept in {}/checkpoint.bin.",
-                                                       world.time(), opt.resumeDir)
+    const auto checkpointLine = [](double time, const std::string& where) {
+        return fmt::format("The last good checkpoint (t = {:.6g} s) is kept in {}/checkpoint.bin.", time, where);
+    };
+    std::string lastCheckpoint = resumed ? checkpointLine(world.time(), opt.resumeDir)
                                          : "No checkpoint was written before the failure (see output.checkpoint_interval).";
     const std::int64_t benchStep = scene.run.benchmarkFrom >= 0 ? std::llround(scene.run.benchmarkFrom / dt) : -1;
 
@@ -204,8 +206,7 @@ int runCommand(const RunOptions& opt) {
             if (doSnap) out.snapshot(world, counters);
             if (doCheckpoint) {
                 io::writeCheckpoint(dir, header, counters, world);
-                lastCheckpoint = fmt::format("The last good checkpoint (t = {:.6g} s) is kept in {}/checkpoint.bin.",
-                                             world.time(), dir);
+                lastCheckpoint = checkpointLine(world.time(), dir);
             }
             outputSeconds += wallSeconds() - t0;
         }

@@ -29,7 +29,6 @@ void writeCheckpoint(const std::string& dir, const CheckpointHeader& header, con
         writePod(out, header.particles);
         writePod(out, header.walls);
         writePod(out, counters.nextSnapshot);
-        writePod(out, counters.wallTimeSoFar);
         world.saveState(out);
         if (!out) throw std::runtime_error("write failed: " + tmp);
     }
@@ -53,7 +52,6 @@ OutputCounters readCheckpoint(const std::string& dir, const CheckpointHeader& ex
             path, h.dt, h.particles, h.walls, expected.dt, expected.particles, expected.walls));
     OutputCounters c;
     c.nextSnapshot = readPod<std::int64_t>(in);
-    c.wallTimeSoFar = readPod<double>(in);
     world.loadState(in);
     return c;
 }

@@ -12,7 +12,6 @@ namespace granulab::io {
 /// Output bookkeeping that must survive a resume.
 struct OutputCounters {
     std::int64_t nextSnapshot = 0;  ///< index of the next VTK snapshot file
-    double wallTimeSoFar = 0;       ///< [s] wall time of the run before this checkpoint
 };
 
 /// Identity of the scene a checkpoint belongs to (dt and particle count must match).
