@@ -30,11 +30,12 @@ int infoCommand(const std::string& scenePath, const std::vector<io::Override>& o
                 ++count;
                 rmin = std::min(rmin, p.radius);
                 rmax = std::max(rmax, p.radius);
-                mass += model::diskMass(scene.materials[m].density, p.radius);
+                mass += model::particleMass(model::massModelOf(scene.dem.massModel), scene.materials[m].density, p.radius);
             }
         if (count)
-            fmt::print("  material {:<12} {:>9} disks, radius {:.4g}..{:.4g} m, density {:.4g} kg/m^2, total mass {:.4g} kg\n",
-                       names[m], count, rmin, rmax, scene.materials[m].density, mass);
+            fmt::print("  material {:<12} {:>9} disks, radius {:.4g}..{:.4g} m, density {:.4g} kg/m^{}, total mass {:.4g} kg\n",
+                       names[m], count, rmin, rmax, scene.materials[m].density, scene.dem.massModel == "sphere" ? 3 : 2,
+                       mass);
         else
             fmt::print("  material {:<12} (walls only)\n", names[m]);
     }
@@ -47,9 +48,10 @@ int infoCommand(const std::string& scenePath, const std::vector<io::Override>& o
                    c.tangential);
     fmt::print("time step    dt = {:.4g} s, end time {:.6g} s, {} steps\n", scene.dem.dt, scene.run.endTime,
                static_cast<long long>(scene.run.endTime / scene.dem.dt + 0.5));
-    fmt::print("contact time {:.4g} s ({}), {:.1f} steps per contact\n", v.advice.contactTime, v.advice.pair,
-               v.advice.contactTime / scene.dem.dt);
-    fmt::print("advised dt   {:.4g} s (contact time / 50); stability limit {:.4g} s\n", v.advice.advisedDt,
+    fmt::print("contact time {:.4g} s ({}, impact at {:.3g} m/s for nonlinear laws), {:.1f} steps per contact\n",
+               v.advice.contactTime, v.advice.pair, v.impactSpeed, v.advice.contactTime / scene.dem.dt);
+    fmt::print("advised dt   {:.4g} s (contact time / 50, at most stability limit / 10); stability limit {:.4g} s\n",
+               v.advice.advisedDt,
                v.advice.stabilityLimit);
     // Estimate: particle store + Verlet half-step velocities (24 B) + neighbour-list reference
     // positions (16 B) + cell grid (12 B) + ~3 candidate pairs per disk (16 B each, history included).

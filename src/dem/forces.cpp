@@ -101,6 +101,7 @@ void diskPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
         k.vn = vrx * nx + vry * ny;
         k.vt = -vrx * ny + vry * nx;
         k.meff = mi * mj / (mi + mj);
+        k.reff = ri * rj / rsum;
         k.dxt = 0;
         if constexpr (!std::is_same_v<T, NoFriction>)
             if (drift.vx) k.dxt = tangentialIncrement(drift, i, j, ri, rj, nx, ny, dt);
@@ -152,6 +153,7 @@ void diskWalls(model::ParticleStore& s, const model::WallSet& walls, ContactList
         k.vn = -dot(vrel, n);
         k.vt = dot(vrel, perp(n));
         k.meff = s.mass[i];
+        k.reff = r;
         k.dxt = 0;
         if constexpr (!std::is_same_v<T, NoFriction>) {
             if (drift.vx) {
@@ -211,23 +213,25 @@ Real contactEnergy(const model::ParticleStore& s, const model::WallSet& walls, c
             using T = std::remove_pointer_t<decltype(tT)>;
             for (std::uint32_t p = b; p < e; ++p) {
                 const std::uint32_t i = cl.first[p];
-                Real overlap;
+                Real overlap, reff;
                 std::uint32_t otherMat;
                 if (wall) {
                     const auto& seg = walls.segments[cl.second[p]];
                     const auto g = geom::diskSegmentContact({s.x[i], s.y[i]}, s.radius[i], seg.a, seg.b, seg.startShared,
                                                             seg.endShared, seg.prevDirection);
                     overlap = g.touching ? g.overlap : 0;
+                    reff = s.radius[i];
                     otherMat = seg.material;
                 } else {
                     const std::uint32_t j = cl.second[p];
                     const Real dx = s.x[j] - s.x[i], dy = s.y[j] - s.y[i];
                     overlap = s.radius[i] + s.radius[j] - std::sqrt(dx * dx + dy * dy);
+                    reff = s.radius[i] * s.radius[j] / (s.radius[i] + s.radius[j]);
                     otherMat = s.material[j];
                 }
                 if (overlap <= 0) continue;
                 const auto law = resolve<N, D, T>(laws.laws()[static_cast<std::size_t>(s.material[i]) * nm + otherMat]);
-                energy += dem::contactEnergy(law, overlap, cl.xi[p]);
+                energy += dem::contactEnergy(law, overlap, reff, cl.xi[p]);
             }
         });
     };

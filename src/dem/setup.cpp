@@ -22,10 +22,22 @@ LawTable buildLawTable(const model::SceneDef& scene, Diagnostics& diags) {
     const auto n = static_cast<std::uint32_t>(names.size());
     LawTable table(n);
     std::vector<int> priority(static_cast<std::size_t>(n) * n, -1);  // 0 wildcard, 1 half, 2 exact
+    std::vector<std::string> reported;  // a law's problems are reported once, not per material pair
+    const auto merge = [&](const Diagnostics& local) {
+        for (const auto& d : local.list())
+            if (std::find(reported.begin(), reported.end(), d.str()) == reported.end()) {
+                reported.push_back(d.str());
+                diags.error(d.loc, d.key, d.message);
+            }
+    };
+    const auto pairMaterials = [&](std::uint32_t a, std::uint32_t b) {
+        const auto& ma = scene.materials[a];
+        const auto& mb = scene.materials[b];
+        return PairMaterials{ma.name, mb.name, ma.youngsModulus, mb.youngsModulus, ma.poisson, mb.poisson};
+    };
     for (std::size_t c = 0; c < scene.contacts.size(); ++c) {
         const auto& def = scene.contacts[c];
         const std::string ctx = fmt::format("contact[{}]", c);
-        const ContactLaw law = buildContactLaw(def, ctx, diags);
         const auto matches = [&](const std::string& pattern, std::uint32_t m) {
             return pattern == "*" || pattern == names[m];
         };
@@ -36,71 +48,98 @@ LawTable buildLawTable(const model::SceneDef& scene, Diagnostics& diags) {
                             fmt::format("unknown material '{}'; defined: {}", *pattern, joinList(names)));
         }
         const int prio = (def.materialA != "*") + (def.materialB != "*");
+        bool anyPair = false;
         for (std::uint32_t a = 0; a < n; ++a)
             for (std::uint32_t b = 0; b < n; ++b) {
                 if (!(matches(def.materialA, a) && matches(def.materialB, b))) continue;
+                anyPair = true;
                 auto& p = priority[static_cast<std::size_t>(a) * n + b];
                 if (p == prio && prio == 2)
                     diags.error(def.loc, ctx, fmt::format("second law for materials {}/{}", names[a], names[b]));
                 if (prio >= p) {
                     p = prio;
                     priority[static_cast<std::size_t>(b) * n + a] = prio;
-                    table.set(a, b, law);
+                    Diagnostics local;
+                    table.set(a, b, buildContactLaw(def, ctx, local, pairMaterials(a, b)));
+                    merge(local);
                 }
             }
+        if (!anyPair) {  // still check the law's keywords and parameters
+            Diagnostics local;
+            buildContactLaw(def, ctx, local, PairMaterials{"", "", 1, 1, 0, 0});
+            merge(local);
+        }
     }
     table.finalize();
     return table;
 }
 
 namespace {
-/// Undamped angular frequency [1/s] and damping rate c/(2 meff) [1/s] of a contact.
+/// Undamped angular frequency [1/s] and damping rate c/(2 meff) [1/s] of a contact, and its
+/// duration [s]. Nonlinear springs are linearised at the largest overlap of an impact at `speed`.
 struct Oscillator {
-    Real omega0 = 0;  ///< normal spring
+    Real omega0 = 0;    ///< normal spring
     Real rate = 0;
     Real omegaMax = 0;  ///< largest of normal and tangential (stability)
+    Real contactTime = 0;
 };
 
-Oscillator oscillatorOf(const ContactLaw& law, Real meff) {
+Oscillator oscillatorOf(const ContactLaw& law, Real meff, Real reff, Real speed) {
     Oscillator o;
-    Real kn = 0;
-    std::visit([&](const auto& normal) { kn = normal.stiffness(0); }, law.normal);
+    Real kn = 0, kTangentNormal = 0, overlapMax = 0;
+    if (const auto* hooke = std::get_if<HookeNormal>(&law.normal)) {
+        kn = kTangentNormal = hooke->kn;
+    } else if (const auto* hertz = std::get_if<HertzNormal>(&law.normal)) {
+        // Elastic Hertz impact: delta_max = (5 meff v^2 / (4 k_Hz))^(2/5), t_c = 2.9432 delta_max / v.
+        const Real kHz = hertz->fourThirdsE * std::sqrt(reff);
+        overlapMax = std::pow(5 * meff * speed * speed / (4 * kHz), 0.4);
+        kn = hertz->stiffness(overlapMax, reff);
+        kTangentNormal = 1.5 * kn;
+        o.contactTime = 2.9432 * overlapMax / speed;
+    }
     o.omega0 = std::sqrt(kn / meff);
     Real c = 0;
     std::visit([&](const auto& d) { c = d.coefficient(meff, kn); }, law.damping);
     o.rate = c / (2 * meff);
-    // A disk's tangential spring sees the reduced mass meff/3 (translation + rolling).
-    o.omegaMax = o.omega0;
-    if (const auto* cs = std::get_if<CundallStrack>(&law.tangential))
-        o.omegaMax = std::max(o.omega0, std::sqrt(3 * cs->kt / meff));
+    if (o.contactTime == 0) {
+        const Real omegaD2 = o.omega0 * o.omega0 - o.rate * o.rate;
+        o.contactTime = omegaD2 > 0 ? kPi / std::sqrt(omegaD2) : kPi / o.omega0;
+    }
+    o.omegaMax = std::sqrt(kTangentNormal / meff);
+    // The tangential spring sees the reduced mass meff/3 (disks) to meff/3.5 (spheres): translation
+    // plus rolling of both bodies; use the smaller.
+    Real kt = 0;
+    if (const auto* cs = std::get_if<CundallStrack>(&law.tangential)) kt = cs->kt;
+    if (const auto* mi = std::get_if<MindlinTangential>(&law.tangential)) kt = mi->stiffness(overlapMax, reff);
+    o.omegaMax = std::max(o.omegaMax, std::sqrt(3.5 * kt / meff));
     return o;
 }
 }  // namespace
 
-TimeStepAdvice adviseTimeStep(const LawTable& laws, const std::vector<std::string>& names,
-                              const std::vector<Real>& minMass, const std::vector<bool>& usedByWalls) {
+TimeStepAdvice adviseTimeStep(const LawTable& laws, const std::vector<std::string>& names, const std::vector<Real>& minMass,
+                              const std::vector<Real>& minRadius, const std::vector<bool>& usedByWalls, Real speed) {
     TimeStepAdvice advice;
     Real worst = 0;
     const auto n = laws.materialCount();
-    const auto consider = [&](std::uint32_t a, std::uint32_t b, Real meff, const std::string& label) {
+    const auto consider = [&](std::uint32_t a, std::uint32_t b, Real meff, Real reff, const std::string& label) {
         if (!laws.has(a, b) || !(meff > 0)) return;
-        const Oscillator o = oscillatorOf(laws.law(a, b), meff);
-        if (o.omegaMax <= worst) return;
+        const Oscillator o = oscillatorOf(laws.law(a, b), meff, reff, speed);
+        if (!(o.omegaMax > worst)) return;
         worst = o.omegaMax;
-        const Real omegaD2 = o.omega0 * o.omega0 - o.rate * o.rate;
-        advice.contactTime = omegaD2 > 0 ? kPi / std::sqrt(omegaD2) : kPi / o.omega0;
+        advice.contactTime = o.contactTime;
         advice.stabilityLimit = 2.0 / o.omegaMax;
-        advice.advisedDt = advice.contactTime / 50.0;
+        advice.advisedDt = std::min(advice.contactTime / 50.0, advice.stabilityLimit / 10.0);
         advice.pair = label;
     };
     for (std::uint32_t a = 0; a < n; ++a) {
         if (!(minMass[a] > 0)) continue;
         for (std::uint32_t b = a; b < n; ++b) {
             if (minMass[b] > 0)
-                consider(a, b, minMass[a] * minMass[b] / (minMass[a] + minMass[b]), names[a] + "-" + names[b]);
+                consider(a, b, minMass[a] * minMass[b] / (minMass[a] + minMass[b]),
+                         minRadius[a] * minRadius[b] / (minRadius[a] + minRadius[b]), names[a] + "-" + names[b]);
         }
         for (std::uint32_t b = 0; b < n; ++b)
-            if (usedByWalls[b]) consider(a, b, minMass[a], names[a] + "-wall(" + names[b] + ")");
+            if (usedByWalls[b]) consider(a, b, minMass[a], minRadius[a], names[a] + "-wall(" + names[b] + ")");
     }
     return advice;
 }
@@ -131,14 +170,15 @@ World makeWorld(const model::SceneDef& scene, const model::InitialParticles& ini
     const auto names = materialNames(scene);
     std::vector<Real> density(names.size(), 0);
     for (std::size_t m = 0; m < scene.materials.size(); ++m) density[m] = scene.materials[m].density;
+    const model::MassModel massModel = model::massModelOf(scene.dem.massModel);
     model::ParticleStore store;
     store.reserve(initial.particles.size());
     Real rmax = 0;
     for (std::size_t k = 0; k < initial.particles.size(); ++k) {
         const auto& p = initial.particles[k];
-        const Real m = model::diskMass(density[p.material], p.radius);
+        const Real m = model::particleMass(massModel, density[p.material], p.radius);
         store.add(static_cast<ParticleId>(k), p.position, p.velocity, p.angle, p.omega, p.radius, m,
-                  model::diskInertia(m, p.radius), p.material);
+                  model::particleInertia(massModel, m, p.radius), p.material);
         rmax = std::max(rmax, p.radius);
     }
     model::WallSet walls;

@@ -23,15 +23,16 @@ LawTable buildLawTable(const model::SceneDef& scene, Diagnostics& diags);
 /// Contact time and time-step limits of the stiffest, lightest contact of the scene.
 struct TimeStepAdvice {
     Real contactTime = 0;     ///< [s] duration of a binary collision (damped linear law)
-    Real advisedDt = 0;       ///< [s] contactTime / 50
+    Real advisedDt = 0;       ///< [s] min(contactTime / 50, stabilityLimit / 10)
     Real stabilityLimit = 0;  ///< [s] 2 / omega_max: velocity Verlet is unstable above it
     std::string pair;         ///< which contact sets the limit, e.g. "grain-grain"
 };
 
-/// `usedByParticles[m]`, `usedByWalls[m]` tell which materials occur; `minMass[m]` [kg] is the
-/// lightest particle of material m.
-TimeStepAdvice adviseTimeStep(const LawTable& laws, const std::vector<std::string>& names,
-                              const std::vector<Real>& minMass, const std::vector<bool>& usedByWalls);
+/// `usedByWalls[m]` tells which materials walls use; `minMass[m]` [kg] and `minRadius[m]` [m] are
+/// the lightest and smallest particle of material m (0: no particle). Nonlinear (Hertz) contacts
+/// are analysed for an impact at `speed` [m/s].
+TimeStepAdvice adviseTimeStep(const LawTable& laws, const std::vector<std::string>& names, const std::vector<Real>& minMass,
+                              const std::vector<Real>& minRadius, const std::vector<bool>& usedByWalls, Real speed);
 
 /// Translates the scene's damping windows etc. into the engine configuration.
 WorldConfig makeWorldConfig(const model::SceneDef& scene, Real maxRadius);

@@ -228,7 +228,7 @@ void readDem(TableReader& r, model::DemDef& dem) {
     r.string("integrator", dem.integrator);
     r.string("broad_phase", dem.broadPhase);
     r.number("skin", dem.skin);
-    r.string("mass_model", dem.massModel);
+    r.choice("mass_model", dem.massModel, {"disk", "sphere"});
     r.integer("sort_every", dem.sortEvery);
     r.vec2("gravity", dem.gravity);
     forEachTable(r, "damping", [&](TableReader& d, std::size_t) {
@@ -481,6 +481,8 @@ SceneDef buildScene(toml::table& root, const std::string& path, const std::vecto
         m.loc = t.loc();
         if (!t.string("name", m.name) && !t.table().get("name")) diags.error(m.loc, t.keyPath("name"), "missing: material name");
         t.number("density", m.density);
+        t.number("youngs_modulus", m.youngsModulus);
+        t.number("poisson", m.poisson);
         scene.materials.push_back(m);
     });
     forEachTable(r, "contact", [&](TableReader& t, std::size_t) {

@@ -75,7 +75,7 @@ void checkStatic(const model::SceneDef& sc, Checker& c, const std::vector<std::s
         d.error(sc.dem.loc, "dem.dt", fmt::format("dt = {} s exceeds run.end_time = {} s", sc.dem.dt, sc.run.endTime));
     c.oneOf(sc.dem.loc, "dem.integrator", sc.dem.integrator, dem::integratorNames());
     c.oneOf(sc.dem.loc, "dem.broad_phase", sc.dem.broadPhase, dem::broadPhaseNames());
-    c.oneOf(sc.dem.loc, "dem.mass_model", sc.dem.massModel, {"disk"});
+    c.oneOf(sc.dem.loc, "dem.mass_model", sc.dem.massModel, {"disk", "sphere"});
     if (sc.dem.sortEvery < 0 || sc.dem.sortEvery > 1000000)
         d.error(sc.dem.loc, "dem.sort_every", fmt::format("must be in [0, 1000000] (0: never), got {}", sc.dem.sortEvery));
     if (sc.dem.skin != -1) c.nonNegative(sc.dem.loc, "dem.skin", sc.dem.skin, "m");
@@ -88,6 +88,9 @@ void checkStatic(const model::SceneDef& sc, Checker& c, const std::vector<std::s
     }
     for (std::size_t k = 0; k < sc.materials.size(); ++k) {
         const auto& m = sc.materials[k];
+        if (m.youngsModulus != 0) c.positive(m.loc, fmt::format("material[{}].youngs_modulus", k), m.youngsModulus, "Pa");
+        if (!(m.poisson >= 0 && m.poisson < 0.5))
+            d.error(m.loc, fmt::format("material[{}].poisson", k), fmt::format("must be in [0, 0.5), got {}", m.poisson));
         if (m.name.empty() || m.name == "*")
             d.error(m.loc, fmt::format("material[{}].name", k),
                     fmt::format("'{}' cannot name a material (\"*\" is the wildcard of [[contact]] materials)", m.name));
@@ -198,12 +201,18 @@ ValidatedScene validate(const model::SceneDef& scene) {
     if (!diags.empty()) diags.throwIfAny();  // later checks need consistent materials and sizes
 
     const std::size_t nm = names.size();
-    std::vector<Real> minMass(nm, 0);
+    const model::MassModel massModel = model::massModelOf(scene.dem.massModel);
+    std::vector<Real> minMass(nm, 0), minRadius(nm, 0);
+    Real speed = 0, ylo = 1e300, yhi = -1e300;
     std::vector<bool> usedByWalls(nm, false);
     std::vector<bool> usedByParticles(nm, false);
     for (const auto& p : out.initial.particles) {
-        const Real m = model::diskMass(scene.materials[p.material].density, p.radius);
+        const Real m = model::particleMass(massModel, scene.materials[p.material].density, p.radius);
         minMass[p.material] = minMass[p.material] > 0 ? std::min(minMass[p.material], m) : m;
+        minRadius[p.material] = minRadius[p.material] > 0 ? std::min(minRadius[p.material], p.radius) : p.radius;
+        speed = std::max(speed, norm(p.velocity));
+        ylo = std::min(ylo, p.position.y);
+        yhi = std::max(yhi, p.position.y);
         usedByParticles[p.material] = true;
     }
     for (const auto& w : scene.walls)
@@ -225,7 +234,13 @@ ValidatedScene validate(const model::SceneDef& scene) {
     checkOverlaps(scene, out.initial, diags);
     diags.throwIfAny();
 
-    out.advice = dem::adviseTimeStep(laws, names, minMass, usedByWalls);
+    // Characteristic impact speed for nonlinear contacts: the fastest start velocity or a free
+    // fall over the height of the packing, at least 1 cm/s.
+    for (const auto& w : scene.walls) speed = std::max(speed, norm(w.velocity));
+    if (!out.initial.particles.empty()) speed = std::max(speed, std::sqrt(2 * norm(scene.dem.gravity) * (yhi - ylo)));
+    speed = std::max(speed, 0.01);
+    out.advice = dem::adviseTimeStep(laws, names, minMass, minRadius, usedByWalls, speed);
+    out.impactSpeed = speed;
     const Real dt = scene.dem.dt;
     if (out.advice.stabilityLimit > 0 && dt > out.advice.stabilityLimit)
         diags.error(scene.dem.loc, "dem.dt",

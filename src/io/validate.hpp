@@ -15,6 +15,7 @@ namespace granulab::io {
 struct ValidatedScene {
     model::InitialParticles initial;
     dem::TimeStepAdvice advice;
+    Real impactSpeed = 0;  ///< [m/s] speed used to analyse nonlinear contacts
     std::vector<std::string> warnings;
 };
 

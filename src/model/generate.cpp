@@ -218,7 +218,7 @@ InitialParticles generateParticles(const SceneDef& scene, const std::vector<std:
             ip.material = mat;
             ip.origin = origin;
             out.particles.push_back(ip);
-            masses.push_back(diskMass(densityOf(mat), radii[k]));
+            masses.push_back(particleMass(massModelOf(scene.dem.massModel), densityOf(mat), radii[k]));
         }
         thermalVelocities(out.particles, first, b.temperature, masses, rng);
     }

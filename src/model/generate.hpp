@@ -27,6 +27,20 @@ struct InitialParticles {
 inline Real diskMass(Real rho, Real r) noexcept { return rho * kPi * r * r; }
 inline Real diskInertia(Real mass, Real r) noexcept { return 0.5 * mass * r * r; }
 
+/// How a 2D particle of radius r gets its mass: a disk (coin) of areal density [kg/m^2], as in
+/// gc2d and LAMMPS density/disc, or a sphere moving in the plane, density [kg/m^3], as in the
+/// cfddem seed (spec section 2.1).
+enum class MassModel { Disk, Sphere };
+inline MassModel massModelOf(const std::string& name) noexcept {
+    return name == "sphere" ? MassModel::Sphere : MassModel::Disk;
+}
+inline Real particleMass(MassModel model, Real rho, Real r) noexcept {
+    return model == MassModel::Sphere ? rho * 4.0 / 3.0 * kPi * r * r * r : diskMass(rho, r);
+}
+inline Real particleInertia(MassModel model, Real mass, Real r) noexcept {
+    return model == MassModel::Sphere ? 0.4 * mass * r * r : diskInertia(mass, r);
+}
+
 /// Smallest and largest radius a size distribution can produce [m].
 Real minRadius(const SizeDistDef& d) noexcept;
 Real maxRadius(const SizeDistDef& d) noexcept;

@@ -38,7 +38,7 @@ struct DemDef {
     std::string integrator = "verlet";    ///< see dem/integrator registry
     std::string broadPhase = "cell_grid"; ///< "cell_grid" | "brute_force"
     Real skin = -1;                       ///< [m] neighbour-list skin; <0: 0.2 * largest radius
-    std::string massModel = "disk";       ///< "disk": areal density, m = rho pi r^2, I = m r^2/2
+    std::string massModel = "disk";       ///< "disk": m = rho pi r^2, I = m r^2/2; "sphere": m = 4/3 rho pi r^3, I = 2/5 m r^2
     std::int64_t sortEvery = 16;          ///< re-sort slots spatially every k-th rebuild (0: never)
     Vec2 gravity{0, 0};                   ///< [m/s^2]
     std::vector<DampingWindowDef> damping;
@@ -47,7 +47,9 @@ struct DemDef {
 
 struct MaterialDef {
     std::string name;
-    Real density = 0;  ///< [kg/m^2] areal density (mass model "disk")
+    Real density = 0;        ///< [kg/m^2] areal density (mass model "disk"), [kg/m^3] ("sphere")
+    Real youngsModulus = 0;  ///< [Pa] for Hertz/Mindlin laws (0: not set)
+    Real poisson = 0;        ///< Poisson ratio, [0, 0.5)
     SourceLoc loc;
 };
 

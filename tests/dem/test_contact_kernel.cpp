@@ -11,7 +11,7 @@ TEST(ContactKernel, CoulombCapHolds) {
     ResolvedLaw<HookeNormal, NoDamping, CundallStrack> law{{1e5}, {}, {2e4, 0, 0, 0.5}, false};
     Real xi = 0;
     for (int k = 0; k < 1000; ++k) {
-        const ContactForce f = evaluateContact(law, {1e-3, 0, 1.0, 1.0, 1e-4}, xi);
+        const ContactForce f = evaluateContact(law, {1e-3, 0, 1.0, 1.0, 1e-4, 0.5}, xi);
         EXPECT_LE(std::abs(f.ft), 0.5 * std::abs(f.fn) * (1 + 1e-12));
     }
     // After sliding, the spring holds exactly the capped force.
@@ -19,11 +19,11 @@ TEST(ContactKernel, CoulombCapHolds) {
 }
 
 TEST(ContactKernel, RestitutionMappingIsMonotone) {
-    EXPECT_DOUBLE_EQ(RestitutionDamping::betaFromRestitution(1.0), 0.0);
-    EXPECT_DOUBLE_EQ(RestitutionDamping::betaFromRestitution(0.0), 1.0);
+    EXPECT_DOUBLE_EQ(linearDampingRatio(1.0), 0.0);
+    EXPECT_DOUBLE_EQ(linearDampingRatio(0.0), 1.0);
     Real prev = 0;
     for (Real e = 0.99; e > 0.01; e -= 0.01) {
-        const Real b = RestitutionDamping::betaFromRestitution(e);
+        const Real b = linearDampingRatio(e);
         EXPECT_GT(b, prev);
         prev = b;
     }
@@ -32,6 +32,6 @@ TEST(ContactKernel, RestitutionMappingIsMonotone) {
 TEST(ContactKernel, ClipAttractionNeverPulls) {
     ResolvedLaw<HookeNormal, ViscousDamping, NoFriction> law{{1e5}, {100}, {}, true};
     Real xi = 0;
-    const ContactForce f = evaluateContact(law, {1e-6, -10.0, 0, 1.0, 0}, xi);
+    const ContactForce f = evaluateContact(law, {1e-6, -10.0, 0, 1.0, 0, 0.5}, xi);
     EXPECT_EQ(f.fn, 0.0);
 }

@@ -31,12 +31,33 @@ struct LawParamSpec {
     std::string rangeText() const;
 };
 
+/// Elastic constants of the two materials of a contact (0 where a material does not set them).
+struct PairMaterials {
+    std::string nameA, nameB;
+    Real youngsA = 0, youngsB = 0;  ///< [Pa]
+    Real poissonA = 0, poissonB = 0;
+};
+
 /// The values a user gave for one [[contact]] entry (all axes together, so a law may derive a
-/// default from another axis, e.g. kt = 2/7 kn). Required values that are missing are recorded.
+/// default from another axis, e.g. kt = 2/7 kn), and the materials of the pair it is built for.
+/// Required values that are missing are recorded.
 class LawParams {
 public:
-    explicit LawParams(std::map<std::string, Real> values, std::vector<std::string> axisKeywords)
-        : m_values(std::move(values)), m_keywords(std::move(axisKeywords)) {}
+    LawParams(std::map<std::string, Real> values, std::vector<std::string> axisKeywords, PairMaterials materials = {})
+        : m_values(std::move(values)), m_keywords(std::move(axisKeywords)), m_materials(std::move(materials)) {}
+
+    const PairMaterials& materials() const noexcept { return m_materials; }
+    /// Effective modulus E* = ((1 - nu_a^2)/E_a + (1 - nu_b^2)/E_b)^-1 [Pa] (cfddem Eq. 3.32); records
+    /// which material lacks youngs_modulus.
+    Real effectiveModulus() const {
+        const auto& m = m_materials;
+        if (!(m.youngsA > 0)) m_missingMaterial.push_back(m.nameA);
+        if (!(m.youngsB > 0)) m_missingMaterial.push_back(m.nameB);
+        if (!(m.youngsA > 0) || !(m.youngsB > 0)) return 0;
+        return 1.0 / ((1 - m.poissonA * m.poissonA) / m.youngsA + (1 - m.poissonB * m.poissonB) / m.youngsB);
+    }
+    /// Materials that a law needed youngs_modulus from but that do not set it.
+    const std::vector<std::string>& materialsMissingModulus() const noexcept { return m_missingMaterial; }
 
     std::optional<Real> get(const std::string& key) const {
         const auto it = m_values.find(key);
@@ -61,7 +82,9 @@ public:
 private:
     std::map<std::string, Real> m_values;
     std::vector<std::string> m_keywords;
+    PairMaterials m_materials;
     mutable std::vector<std::string> m_missing;
+    mutable std::vector<std::string> m_missingMaterial;
 };
 
 /// Shorthand used by the law tables.

@@ -12,7 +12,9 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "dem/contact/hertz_restitution.hpp"
 #include "dem/contact/law_params.hpp"
+#include "dem/contact/kinematics.hpp"
 
 namespace granulab::dem {
 
@@ -28,14 +30,33 @@ struct HookeNormal {
     static HookeNormal make(const LawParams& p) { return {p.require("kn")}; }
 
     Real kn = 0;
-    Real force(Real overlap) const noexcept { return kn * overlap; }
+    Real force(Real overlap, Real /*reff*/) const noexcept { return kn * overlap; }
     /// Secant stiffness F/delta [N/m], used by damping laws scaled with stiffness.
-    Real stiffness(Real /*overlap*/) const noexcept { return kn; }
+    Real stiffness(Real /*overlap*/, Real /*reff*/) const noexcept { return kn; }
     /// Stored elastic energy [J].
-    Real energy(Real overlap) const noexcept { return 0.5 * kn * overlap * overlap; }
+    Real energy(Real overlap, Real /*reff*/) const noexcept { return 0.5 * kn * overlap * overlap; }
 };
 
-using NormalLaw = std::variant<HookeNormal>;
+/// Hertz spring (cfddem Eq. 3.29-3.34): F = k_Hz delta^(3/2), k_Hz = 4/3 E* sqrt(R_eff), with the
+/// effective modulus E* of the two materials' youngs_modulus and poisson (Eq. 3.32).
+struct HertzNormal {
+    static constexpr LawAxis kAxis = LawAxis::Normal;
+    static constexpr const char* kKeyword = "hertz";
+    static constexpr const char* kDoc =
+        "Hertz spring F_n = 4/3 E* sqrt(R_eff) delta^(3/2); E* from the materials' youngs_modulus and poisson";
+    static std::vector<LawParamSpec> params() { return {}; }
+    static HertzNormal make(const LawParams& p) { return {4.0 / 3.0 * p.effectiveModulus()}; }
+
+    Real fourThirdsE = 0;  ///< [Pa] 4/3 E*
+    Real force(Real overlap, Real reff) const noexcept {
+        return fourThirdsE * std::sqrt(reff * overlap) * overlap;
+    }
+    /// Secant stiffness k_n(delta) = k_Hz sqrt(delta) [N/m] (Eq. 3.34).
+    Real stiffness(Real overlap, Real reff) const noexcept { return fourThirdsE * std::sqrt(reff * overlap); }
+    Real energy(Real overlap, Real reff) const noexcept { return 0.4 * force(overlap, reff) * overlap; }
+};
+
+using NormalLaw = std::variant<HookeNormal, HertzNormal>;
 
 // ---------------------------------------------------------------- normal damping
 // Each returns the normal damping coefficient c [N s/m]; the damping force is c * v_n.
@@ -74,17 +95,32 @@ struct RestitutionDamping {
     static std::vector<LawParamSpec> params() {
         return {lawParam("e", "-", 0, 1, false, "required", "normal restitution coefficient")};
     }
-    static RestitutionDamping make(const LawParams& p) { return {betaFromRestitution(p.require("e"))}; }
+    static RestitutionDamping make(const LawParams& p) {
+        const Real e = p.require("e");
+        const bool clip = p.getOr("clip_attraction", 0.0) != 0.0;
+        // Hooke: Eq. 3.78 (exact, unclipped). Hertz: e(D) of the Hertz-Lehr collision, inverted.
+        return {p.uses(HertzNormal::kKeyword) ? hertzDampingRatio(e, clip) : linearDampingRatio(e)};
+    }
 
-    Real beta = 0;  ///< damping ratio derived from e, in [0, 1]
+    Real beta = 0;  ///< damping ratio derived from e
     Real coefficient(Real meff, Real stiffness) const noexcept {
         return 2.0 * beta * std::sqrt(meff * stiffness);
     }
-    static Real betaFromRestitution(Real e) noexcept {
-        if (e <= 0) return 1.0;
-        const Real l = std::log(e);
-        return -l / std::sqrt(kPi * kPi + l * l);
+};
+
+/// Lehr damping ratio D_n (cfddem Eq. 3.44): c_n = 2 D_n sqrt(meff k_n(delta)); with the Hertz
+/// spring c_n grows as delta^(1/4). D_n = 1 is the aperiodic limit of the linear law.
+struct LehrDamping {
+    static constexpr LawAxis kAxis = LawAxis::Damping;
+    static constexpr const char* kKeyword = "lehr";
+    static constexpr const char* kDoc = "Lehr damping ratio: c_n = 2 D_n sqrt(meff k_n(delta)) (Uphoff Eq. 3.44)";
+    static std::vector<LawParamSpec> params() {
+        return {lawParam("D_n", "-", 0, kUnbounded, false, "required", "normal damping ratio (0 elastic)")};
     }
+    static LehrDamping make(const LawParams& p) { return {p.require("D_n")}; }
+
+    Real ratio = 0;
+    Real coefficient(Real meff, Real stiffness) const noexcept { return 2.0 * ratio * std::sqrt(meff * stiffness); }
 };
 
 /// LAMMPS gran/hooke/history convention: c = meff * gamma_n, gamma_n [1/s].
@@ -101,7 +137,7 @@ struct MassScaledDamping {
     Real coefficient(Real meff, Real /*stiffness*/) const noexcept { return meff * gammaN; }
 };
 
-using DampingLaw = std::variant<NoDamping, ViscousDamping, RestitutionDamping, MassScaledDamping>;
+using DampingLaw = std::variant<NoDamping, ViscousDamping, RestitutionDamping, MassScaledDamping, LehrDamping>;
 
 // ---------------------------------------------------------------- tangential
 /// Frictionless contact.
@@ -111,7 +147,22 @@ struct NoFriction {
     static constexpr const char* kDoc = "frictionless";
     static std::vector<LawParamSpec> params() { return {}; }
     static NoFriction make(const LawParams&) { return {}; }
+
+    Real force(const ContactKinematics&, Real /*kn*/, Real /*fn*/, Real& /*ioXi*/) const noexcept { return 0; }
+    Real energy(Real, Real, Real) const noexcept { return 0; }
 };
+
+/// Coulomb cap shared by the tangential springs: |F_t| <= mu |F_n|. When the trial force exceeds
+/// the cap, the force is scaled onto it and, if `resetSpring`, the spring xi is reset so that
+/// kt xi + ct vt gives exactly the capped force (Cundall's fix, LAMMPS convention).
+inline Real coulombCap(Real trial, Real fn, Real mu, Real kt, Real ct, Real vt, bool resetSpring, Real& ioXi) noexcept {
+    const Real cap = mu * std::abs(fn);
+    const Real mag = std::abs(trial);
+    if (mag <= cap) return trial;
+    const Real scale = cap / mag;
+    if (resetSpring) ioXi = kt > 0 ? scale * (ioXi + ct * vt / kt) - ct * vt / kt : 0;
+    return trial * scale;
+}
 
 /// Cundall-Strack spring with Coulomb cap (Cundall & Strack 1979): the tangential displacement
 /// xi [m] is kept in the current tangent direction (a scalar in 2D, so rotation of the contact
@@ -142,9 +193,66 @@ struct CundallStrack {
     Real ct = 0;      ///< [N s/m] constant tangential damping
     Real gammaT = 0;  ///< [1/s] mass-scaled tangential damping
     Real mu = 0;      ///< Coulomb friction coefficient
+
+    Real force(const ContactKinematics& k, Real /*kn*/, Real fn, Real& ioXi) const noexcept {
+        const Real c = ct + k.meff * gammaT;
+        ioXi += k.dxt;
+        return coulombCap(-(kt * ioXi + c * k.vt), fn, mu, kt, c, k.vt, true, ioXi);
+    }
+    Real energy(Real, Real, Real xi) const noexcept { return 0.5 * kt * xi * xi; }
 };
 
-using TangentialLaw = std::variant<NoFriction, CundallStrack>;
+/// Mindlin tangential spring of the cfddem seed (Eq. 3.47-3.54): k_t = 8 G* sqrt(R_eff delta) with
+/// G* = E*/(2 (1 + nu*)), nu* = (1/nu_a + 1/nu_b)^-1 (Eq. 3.49/3.51), damper
+/// c_t = 2 D_t sqrt(meff k_n(delta)) with the NORMAL stiffness (Eq. 3.53), Coulomb cap mu |F_n|.
+/// `literal = true` reads Eq. 3.48 as printed, k_t = 8 G* sqrt(R_eff) delta (spec section 3.6).
+/// The seed caps the force only; `reset_spring = true` also resets the spring (Cundall's fix).
+struct MindlinTangential {
+    static constexpr LawAxis kAxis = LawAxis::Tangential;
+    static constexpr const char* kKeyword = "mindlin";
+    static constexpr const char* kDoc =
+        "Mindlin spring k_t = 8 G* sqrt(R_eff delta), damper 2 D_t sqrt(meff k_n), Coulomb cap (Uphoff Eq. 3.47-3.55)";
+    static std::vector<LawParamSpec> params() {
+        LawParamSpec literal = lawParam("literal", "-", 0, 1, false, "false",
+                                        "k_t = 8 G* sqrt(R_eff) delta as printed in the seed (dimensionally odd)");
+        literal.isBool = true;
+        LawParamSpec reset = lawParam("reset_spring", "-", 0, 1, false, "false",
+                                      "when sliding, reset the spring to the capped force (the seed caps the force only)");
+        reset.isBool = true;
+        return {lawParam("mu", "-", 0, kUnbounded, false, "required", "friction coefficient"),
+                lawParam("D_t", "-", 0, kUnbounded, false, "0", "tangential damping ratio"), literal, reset};
+    }
+    static MindlinTangential make(const LawParams& p) {
+        MindlinTangential m;
+        const auto& mat = p.materials();
+        const Real nuEff = (mat.poissonA > 0 && mat.poissonB > 0) ? 1.0 / (1.0 / mat.poissonA + 1.0 / mat.poissonB) : 0.0;
+        m.eightG = 8.0 * p.effectiveModulus() / (2.0 * (1.0 + nuEff));
+        m.ratio = p.getOr("D_t", 0.0);
+        m.mu = p.require("mu");
+        m.literal = p.getOr("literal", 0.0) != 0.0;
+        m.resetSpring = p.getOr("reset_spring", 0.0) != 0.0;
+        return m;
+    }
+
+    Real eightG = 0;  ///< [Pa] 8 G*
+    Real ratio = 0;   ///< D_t
+    Real mu = 0;
+    bool literal = false;
+    bool resetSpring = false;
+
+    Real stiffness(Real overlap, Real reff) const noexcept {
+        return literal ? eightG * std::sqrt(reff) * overlap : eightG * std::sqrt(reff * overlap);
+    }
+    Real force(const ContactKinematics& k, Real kn, Real fn, Real& ioXi) const noexcept {
+        const Real kt = stiffness(k.overlap, k.reff);
+        const Real ct = 2.0 * ratio * std::sqrt(k.meff * kn);
+        ioXi += k.dxt;
+        return coulombCap(-(kt * ioXi + ct * k.vt), fn, mu, kt, ct, k.vt, resetSpring, ioXi);
+    }
+    Real energy(Real overlap, Real reff, Real xi) const noexcept { return 0.5 * stiffness(overlap, reff) * xi * xi; }
+};
+
+using TangentialLaw = std::variant<NoFriction, CundallStrack, MindlinTangential>;
 
 /// One resolved contact law for a pair of materials.
 struct ContactLaw {

@@ -3,6 +3,7 @@
 // not touch this file).
 #include "dem/contact/registry.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 
@@ -85,7 +86,8 @@ const char* axisKey(LawAxis axis) noexcept {
     return "";
 }
 
-ContactLaw buildContactLaw(const model::ContactDef& def, const std::string& ctx, Diagnostics& diags) {
+ContactLaw buildContactLaw(const model::ContactDef& def, const std::string& ctx, Diagnostics& diags,
+                           const PairMaterials& materials) {
     const std::string* names[3] = {&def.normal, &def.damping, &def.tangential};
     const LawAxis axes[3] = {LawAxis::Normal, LawAxis::Damping, LawAxis::Tangential};
     std::vector<const LawParamSpec*> allowed;
@@ -133,7 +135,7 @@ ContactLaw buildContactLaw(const model::ContactDef& def, const std::string& ctx,
     }
 
     ContactLaw law;
-    const LawParams params(values, {def.normal, def.damping, def.tangential});
+    const LawParams params(values, {def.normal, def.damping, def.tangential}, materials);
     makeByKeyword(def.normal, params, law.normal);
     makeByKeyword(def.damping, params, law.damping);
     makeByKeyword(def.tangential, params, law.tangential);
@@ -144,6 +146,15 @@ ContactLaw buildContactLaw(const model::ContactDef& def, const std::string& ctx,
                 diags.error(def.loc, ctx + "." + key,
                             fmt::format("missing required parameter '{}' ({}), allowed {} [{}]", key, p->doc,
                                         p->rangeText(), p->unit));
+    std::vector<std::string> seen;
+    for (const auto& name : params.materialsMissingModulus()) {
+        if (std::find(seen.begin(), seen.end(), name) != seen.end()) continue;
+        seen.push_back(name);
+        diags.error(def.loc, ctx,
+                    fmt::format("laws {}/{}/{} need the elastic constants of material '{}': set its youngs_modulus "
+                                "[Pa] in (0, inf) and poisson in [0, 0.5)",
+                                def.normal, def.damping, def.tangential, name));
+    }
     return law;
 }
 

@@ -32,6 +32,6 @@ const char* axisKey(LawAxis axis) noexcept;
 /// Builds the law of one material pair; every problem goes to `diags` (the result is then
 /// unusable but the scan continues so that all errors are reported together).
 ContactLaw buildContactLaw(const model::ContactDef& def, const std::string& contextKey,
-                           Diagnostics& diags);
+                           Diagnostics& diags, const PairMaterials& materials);
 
 }  // namespace granulab::dem
