@@ -184,6 +184,7 @@ int runCommand(const RunOptions& opt) {
     std::int64_t benchStartStep = 0;
     std::uint32_t status = dem::kStepOk;
     double outputSeconds = 0;
+    std::uint64_t guardSkips = 0;  // contact evaluations skipped by the overlap guard
     while (world.stepIndex() < endStep) {
         if (world.stepIndex() == benchStep) {
             benchStartWall = wallSeconds();
@@ -191,6 +192,13 @@ int runCommand(const RunOptions& opt) {
         }
         status = world.step();
         if (status != dem::kStepOk) break;
+        if (world.forceStats().guardSkips > 0) {
+            if (guardSkips == 0 && !opt.quiet)
+                fmt::print(stderr, "\nnote: overlap guard skipped {} contact(s) deeper than 1 % of the radius at t = {:.6g} s "
+                                   "(counted in summary.json)\n",
+                           world.forceStats().guardSkips, world.time());
+            guardSkips += world.forceStats().guardSkips;
+        }
         const std::int64_t k = world.stepIndex();
         const bool last = k == endStep;
         const bool doSeries = k % seriesEvery == 0 || last;
@@ -217,6 +225,8 @@ int runCommand(const RunOptions& opt) {
 
     const bool ok = status == dem::kStepOk;
     std::vector<std::string> warnings = valid.warnings;
+    if (guardSkips > 0)
+        warnings.push_back(fmt::format("overlap guard skipped {} particle-pair contact evaluations", guardSkips));
     if (ok) io::writeFinalCsv(dir + "/final.csv", world.store(), dem::materialNames(scene));
 
     const std::int64_t steps = world.stepIndex() - loopStartStep;
@@ -243,6 +253,7 @@ int runCommand(const RunOptions& opt) {
     js["candidate_pairs"] = world.neighbors().pairs.size();
     js["contacts"] = world.forceStats().contacts;
     js["wall_contacts"] = world.forceStats().wallContacts;
+    js["overlap_guard_skips"] = guardSkips;
     nlohmann::json timers;
     for (std::size_t s = 0; s < static_cast<std::size_t>(dem::Stage::Count); ++s)
         timers[dem::stageName(static_cast<dem::Stage>(s))] = world.timers().seconds(static_cast<dem::Stage>(s));

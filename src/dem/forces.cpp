@@ -57,7 +57,8 @@ inline Real tangentialIncrement(const DriftVelocities& d, std::uint32_t i, std::
 
 template <class N, class D, class T>
 void diskPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, std::uint32_t end,
-               const LawTable& laws, const DriftVelocities& drift, Real dt, ForceStats& stats) noexcept {
+               const LawTable& laws, const DriftVelocities& drift, Real dt, Real overlapGuard,
+               ForceStats& stats) noexcept {
     const std::uint32_t nm = laws.materialCount();
     const ContactLaw* table = laws.laws().data();
     const Real* __restrict x = s.x.data();
@@ -91,6 +92,10 @@ void diskPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
         const Real invR = r > 0 ? 1.0 / r : 0.0;
         const Real nx = r > 0 ? dx * invR : 1.0, ny = r > 0 ? dy * invR : 0.0;
         const Real overlap = rsum - r;
+        if (overlapGuard > 0 && overlap > overlapGuard * (ri < rj ? ri : rj)) {  // seed's guard, off by default
+            ++stats.guardSkips;
+            continue;
+        }
         // Relative velocity of i's contact point w.r.t. j's: v_i - v_j + (w_i r_i + w_j r_j) perp(n).
         const Real wsum = om[i] * ri + om[j] * rj;
         const Real vrx = vx[i] - vx[j] - wsum * ny;
@@ -192,7 +197,7 @@ void computeForces(model::ParticleStore& s, const model::WallSet& walls, Neighbo
         using N = std::remove_pointer_t<decltype(nT)>;
         using D = std::remove_pointer_t<decltype(dT)>;
         using T = std::remove_pointer_t<decltype(tT)>;
-        diskPairs<N, D, T>(s, list.pairs, b, e, laws, drift, dt, stats);
+        diskPairs<N, D, T>(s, list.pairs, b, e, laws, drift, dt, body.overlapGuard, stats);
     });
     forEachBucket(list.wallPairs, laws, [&](auto* nT, auto* dT, auto* tT, std::uint32_t b, std::uint32_t e) {
         using N = std::remove_pointer_t<decltype(nT)>;

@@ -15,6 +15,8 @@ namespace granulab::dem {
 
 struct BodyForces {
     Vec2 gravity;             ///< [m/s^2]
+    Real overlapGuard = 0;    ///< skip particle pairs whose overlap exceeds this fraction of the
+                              ///< smaller radius (cfddem spec section 3.1); 0: off
     Real gamma = 0;           ///< [kg/s] global viscous damping F = -gamma v
     Real gammaRotation = 0;   ///< [kg m^2/s] torque = -gammaRotation omega
 };
@@ -23,6 +25,7 @@ struct ForceStats {
     std::uint64_t contacts = 0;      ///< touching particle pairs
     std::uint64_t wallContacts = 0;  ///< touching particle-segment pairs
     Real maxRelativeOverlap = 0;     ///< largest overlap / smaller radius of the contact
+    std::uint64_t guardSkips = 0;    ///< particle pairs skipped by the overlap guard
 };
 
 /// Overwrites f and torque with body forces, then adds all contact forces. Updates the

@@ -152,6 +152,7 @@ WorldConfig makeWorldConfig(const model::SceneDef& scene, Real maxRadius) {
     c.integrator = scene.dem.integrator;
     c.broadPhase = scene.dem.broadPhase;
     c.sortEveryRebuilds = static_cast<int>(scene.dem.sortEvery);
+    c.overlapGuard = scene.dem.overlapGuard ? 0.01 : 0.0;
     for (const auto& w : scene.dem.damping) {
         DampingWindow d;
         d.gamma = w.gamma;

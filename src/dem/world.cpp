@@ -40,6 +40,7 @@ World::World(WorldConfig config, model::ParticleStore store, model::WallSet wall
 BodyForces World::bodyForcesAt(std::int64_t step) const noexcept {
     BodyForces b;
     b.gravity = m_config.gravity;
+    b.overlapGuard = m_config.overlapGuard;
     for (const auto& w : m_config.damping)
         if (step >= w.fromStep && step < w.toStep) {
             b.gamma += w.gamma;

@@ -36,6 +36,7 @@ struct WorldConfig {
     std::vector<DampingWindow> damping;
     Real skin = 0;                    ///< [m] neighbour-list skin
     int sortEveryRebuilds = 16;       ///< spatial re-sort of slots every k-th rebuild (0: never)
+    Real overlapGuard = 0;            ///< see BodyForces::overlapGuard
     std::string integrator = "verlet";
     std::string broadPhase = "cell_grid";
 };

@@ -230,6 +230,7 @@ void readDem(TableReader& r, model::DemDef& dem) {
     r.number("skin", dem.skin);
     r.choice("mass_model", dem.massModel, {"disk", "sphere"});
     r.integer("sort_every", dem.sortEvery);
+    r.boolean("overlap_guard", dem.overlapGuard);
     r.vec2("gravity", dem.gravity);
     forEachTable(r, "damping", [&](TableReader& d, std::size_t) {
         model::DampingWindowDef w;

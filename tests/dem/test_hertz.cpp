@@ -181,3 +181,26 @@ material = "steel"
         EXPECT_NEAR(ratio, e * e, 0.01);
     }
 }
+
+TEST(Hertz, OverlapGuardIsOffByDefaultAndCountsWhenOn) {
+    // At 20 m/s the Hertz overlap of R = 0.5 m steel spheres reaches ~2 % of R.
+    const Real r = 0.5;
+    const std::string toml = twoSpheres(r, 20.0, 2e-6, "damping = \"none\"", 1e-3);
+    for (const bool guard : {false, true}) {
+        dem::World w = test::makeWorldFromToml(toml, {io::parseOverride(guard ? "dem.overlap_guard=true" : "dem.overlap_guard=false")});
+        std::uint64_t skips = 0;
+        Real maxOverlap = 0;
+        for (int k = 0; k < 3000; ++k) {
+            w.step();
+            skips += w.forceStats().guardSkips;
+            maxOverlap = std::max(maxOverlap, w.forceStats().maxRelativeOverlap);
+        }
+        if (guard) {
+            EXPECT_GT(skips, 0u);
+        } else {
+            EXPECT_EQ(skips, 0u);
+            EXPECT_GT(maxOverlap, 0.01);  // the overlap the guard would have refused
+            EXPECT_NEAR(w.store().vx[0] + w.store().vx[1], 0.0, 1e-9);
+        }
+    }
+}
