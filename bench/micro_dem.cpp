@@ -95,7 +95,7 @@ void BM_NeighborRebuild(benchmark::State& state, const std::string& broadName) {
     dem::NeighborList list;
     const std::vector<std::uint32_t> noPermutation;
     for (auto _ : state) {
-        list.rebuild(world.store(), world.walls(), world.config().skin, 0.0, *broad, world.laws(), noPermutation);
+        list.rebuild(world.store(), world.walls(), world.config().skin, 0.0, *broad, world.laws(), noPermutation, false);
         benchmark::DoNotOptimize(list.pairs.first.data());
         benchmark::ClobberMemory();
     }

@@ -250,6 +250,8 @@ int runCommand(const RunOptions& opt) {
     js["integrator"] = world.integratorName();
     js["broad_phase"] = world.broadPhaseName();
     js["neighbor_builds"] = world.neighbors().builds;
+    js["force_evaluations_per_step"] =
+        world.stepIndex() > 0 ? static_cast<double>(world.forceEvaluations()) / static_cast<double>(world.stepIndex()) : 0.0;
     js["candidate_pairs"] = world.neighbors().pairs.size();
     js["contacts"] = world.forceStats().contacts;
     js["wall_contacts"] = world.forceStats().wallContacts;

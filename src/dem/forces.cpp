@@ -57,7 +57,7 @@ inline Real tangentialIncrement(const DriftVelocities& d, std::uint32_t i, std::
 
 template <class N, class D, class T>
 void diskPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, std::uint32_t end,
-               const LawTable& laws, const DriftVelocities& drift, Real dt, Real overlapGuard,
+               const LawTable& laws, const DriftVelocities& drift, Real dt, Real overlapGuard, bool trialHistory,
                ForceStats& stats) noexcept {
     const std::uint32_t nm = laws.materialCount();
     const ContactLaw* table = laws.laws().data();
@@ -74,7 +74,8 @@ void diskPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
     Real* __restrict tq = s.torque.data();
     const std::uint32_t* __restrict pi = list.first.data();
     const std::uint32_t* __restrict pj = list.second.data();
-    Real* __restrict xiHist = list.xi.data();
+    const Real* xiIn = list.xi.data();
+    Real* xiOut = trialHistory ? list.xiTrial.data() : list.xi.data();
     std::uint64_t contacts = 0;
     Real maxRel = stats.maxRelativeOverlap;
     for (std::uint32_t p = begin; p < end; ++p) {
@@ -84,7 +85,7 @@ void diskPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
         const Real rsum = ri + rj;
         const Real r2 = dx * dx + dy * dy;
         if (r2 >= rsum * rsum) {
-            xiHist[p] = 0;
+            xiOut[p] = 0;
             continue;
         }
         ++contacts;
@@ -94,6 +95,7 @@ void diskPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
         const Real overlap = rsum - r;
         if (overlapGuard > 0 && overlap > overlapGuard * (ri < rj ? ri : rj)) {  // seed's guard, off by default
             ++stats.guardSkips;
+            xiOut[p] = xiIn[p];
             continue;
         }
         // Relative velocity of i's contact point w.r.t. j's: v_i - v_j + (w_i r_i + w_j r_j) perp(n).
@@ -111,7 +113,9 @@ void diskPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
         if constexpr (!std::is_same_v<T, NoFriction>)
             if (drift.vx) k.dxt = tangentialIncrement(drift, i, j, ri, rj, nx, ny, dt);
         const auto law = resolve<N, D, T>(table[static_cast<std::size_t>(mat[i]) * nm + mat[j]]);
-        const ContactForce f = evaluateContact(law, k, xiHist[p]);
+        Real xi = xiIn[p];
+        const ContactForce f = evaluateContact(law, k, xi);
+        xiOut[p] = xi;
         // Force on i: -fn n + ft t.
         const Real fxi = -f.fn * nx - f.ft * ny;
         const Real fyi = -f.fn * ny + f.ft * nx;
@@ -131,8 +135,8 @@ void diskPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
 /// Disk-wall contacts of one bucket. n points from the wall to the disk centre.
 template <class N, class D, class T>
 void diskWalls(model::ParticleStore& s, const model::WallSet& walls, ContactList& list, std::uint32_t begin,
-               std::uint32_t end, const LawTable& laws, const DriftVelocities& drift, Real dt, ForceStats& stats,
-               std::vector<Vec2>& wallForce) noexcept {
+               std::uint32_t end, const LawTable& laws, const DriftVelocities& drift, Real dt, bool trialHistory,
+               ForceStats& stats, std::vector<Vec2>& wallForce) noexcept {
     const std::uint32_t nm = laws.materialCount();
     const ContactLaw* table = laws.laws().data();
     std::uint64_t contacts = 0;
@@ -143,8 +147,9 @@ void diskWalls(model::ParticleStore& s, const model::WallSet& walls, ContactList
         const Real r = s.radius[i];
         const auto g = geom::diskSegmentContact(c, r, seg.a, seg.b, seg.startShared, seg.endShared,
                                                 seg.prevDirection);
+        Real* xiOut = trialHistory ? list.xiTrial.data() : list.xi.data();
         if (!g.touching || g.overlap <= 0) {
-            list.xi[p] = 0;
+            xiOut[p] = 0;
             continue;
         }
         ++contacts;
@@ -168,7 +173,9 @@ void diskWalls(model::ParticleStore& s, const model::WallSet& walls, ContactList
             }
         }
         const auto law = resolve<N, D, T>(table[static_cast<std::size_t>(s.material[i]) * nm + seg.material]);
-        const ContactForce f = evaluateContact(law, k, list.xi[p]);
+        Real xi = list.xi[p];
+        const ContactForce f = evaluateContact(law, k, xi);
+        xiOut[p] = xi;
         const Real fxi = f.fn * n.x - f.ft * n.y;
         const Real fyi = f.fn * n.y + f.ft * n.x;
         s.fx[i] += fxi;
@@ -183,8 +190,8 @@ void diskWalls(model::ParticleStore& s, const model::WallSet& walls, ContactList
 }  // namespace
 
 void computeForces(model::ParticleStore& s, const model::WallSet& walls, NeighborList& list, const LawTable& laws,
-                   const BodyForces& body, const DriftVelocities& drift, Real dt, ForceStats& stats,
-                   std::vector<Vec2>& wallForce) noexcept {
+                   const BodyForces& body, const DriftVelocities& drift, Real dt, bool trialHistory,
+                   ForceStats& stats, std::vector<Vec2>& wallForce) noexcept {
     const std::size_t n = s.size();
     for (std::size_t i = 0; i < n; ++i) {
         s.fx[i] = s.mass[i] * body.gravity.x - body.gamma * s.vx[i];
@@ -197,13 +204,13 @@ void computeForces(model::ParticleStore& s, const model::WallSet& walls, Neighbo
         using N = std::remove_pointer_t<decltype(nT)>;
         using D = std::remove_pointer_t<decltype(dT)>;
         using T = std::remove_pointer_t<decltype(tT)>;
-        diskPairs<N, D, T>(s, list.pairs, b, e, laws, drift, dt, body.overlapGuard, stats);
+        diskPairs<N, D, T>(s, list.pairs, b, e, laws, drift, dt, body.overlapGuard, trialHistory, stats);
     });
     forEachBucket(list.wallPairs, laws, [&](auto* nT, auto* dT, auto* tT, std::uint32_t b, std::uint32_t e) {
         using N = std::remove_pointer_t<decltype(nT)>;
         using D = std::remove_pointer_t<decltype(dT)>;
         using T = std::remove_pointer_t<decltype(tT)>;
-        diskWalls<N, D, T>(s, walls, list.wallPairs, b, e, laws, drift, dt, stats, wallForce);
+        diskWalls<N, D, T>(s, walls, list.wallPairs, b, e, laws, drift, dt, trialHistory, stats, wallForce);
     });
 }
 

@@ -30,12 +30,13 @@ struct ForceStats {
 
 /// Overwrites f and torque with body forces, then adds all contact forces. Updates the
 /// tangential history of every candidate (reset to zero when not touching): the spring grows by
-/// the contact-point displacement of this step, drift velocity * dt.
+/// the contact-point displacement of this step, drift velocity * dt. `trialHistory`: read the
+/// accepted springs and write trial springs (committed by the caller once the step is accepted).
 /// reads: x, v (for damping), drift velocities, omega, radius, mass; writes: f, torque, list histories, stats,
 /// wallForce[w] = total contact force [N] the particles exert on wall w (size = wall count).
 void computeForces(model::ParticleStore& s, const model::WallSet& walls, NeighborList& list,
                    const LawTable& laws, const BodyForces& body, const DriftVelocities& drift, Real dt,
-                   ForceStats& stats,
+                   bool trialHistory, ForceStats& stats,
                    std::vector<Vec2>& wallForce) noexcept;
 
 /// Elastic energy [J] stored in all contacts (normal and tangential springs); no side effects.

@@ -1,18 +1,49 @@
 // SPDX-License-Identifier: MIT
-// Velocity Verlet and the integrator factory.
+// Integrators: velocity Verlet, explicit Euler, the cfddem predictor-corrector iteration and the
+// gc2d 6-value Gear predictor-corrector, and their factory.
 #include "dem/integrator.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <istream>
+#include <ostream>
+
+#include "core/binary_io.hpp"
 
 namespace granulab::dem {
 
+void StateColumns::permute(const std::vector<std::uint32_t>& order) {
+    for (auto& col : columns) {
+        if (col.size() != order.size()) continue;  // no step in progress yet
+        std::vector<Real> out(order.size());
+        for (std::size_t k = 0; k < order.size(); ++k) out[k] = col[order[k]];
+        col.swap(out);
+    }
+}
+
+std::size_t StateColumns::bytes() const noexcept {
+    std::size_t b = 0;
+    for (const auto& c : columns) b += c.capacity() * sizeof(Real);
+    return b;
+}
+
+namespace {
+/// Largest |v| of the store; NaN propagates so that the caller sees a blow-up.
+Real maxSpeed(const model::ParticleStore& s) noexcept {
+    Real maxV2 = 0;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        const Real v2 = s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i];
+        maxV2 = (v2 > maxV2 || v2 != v2) ? v2 : maxV2;
+    }
+    return std::sqrt(maxV2);
+}
+}  // namespace
+
+// ------------------------------------------------------------------ velocity Verlet
+
 Real VelocityVerlet::predict(model::ParticleStore& s, Real dt) noexcept {
     const std::size_t n = s.size();
-    if (m_halfVx.size() != n) {  // first step or particle count changed (outside the hot loop)
-        m_halfVx.resize(n);
-        m_halfVy.resize(n);
-        m_halfOmega.resize(n);
-    }
+    m_half.resize(n);  // no-op after the first step
     const Real h = 0.5 * dt;
     Real* __restrict x = s.x.data();
     Real* __restrict y = s.y.data();
@@ -20,9 +51,9 @@ Real VelocityVerlet::predict(model::ParticleStore& s, Real dt) noexcept {
     Real* __restrict vy = s.vy.data();
     Real* __restrict a = s.angle.data();
     Real* __restrict w = s.omega.data();
-    Real* __restrict hvx = m_halfVx.data();
-    Real* __restrict hvy = m_halfVy.data();
-    Real* __restrict hw = m_halfOmega.data();
+    Real* __restrict hvx = m_half[0];
+    Real* __restrict hvy = m_half[1];
+    Real* __restrict hw = m_half[2];
     const Real* __restrict fx = s.fx.data();
     const Real* __restrict fy = s.fy.data();
     const Real* __restrict tq = s.torque.data();
@@ -46,30 +77,176 @@ Real VelocityVerlet::predict(model::ParticleStore& s, Real dt) noexcept {
     return std::sqrt(maxV2);
 }
 
-void VelocityVerlet::correct(model::ParticleStore& s, Real dt) noexcept {
+bool VelocityVerlet::correct(model::ParticleStore& s, Real dt, int) noexcept {
     const std::size_t n = s.size();
     const Real h = 0.5 * dt;
     for (std::size_t i = 0; i < n; ++i) {
-        s.vx[i] = m_halfVx[i] + h * s.fx[i] * s.invMass[i];
-        s.vy[i] = m_halfVy[i] + h * s.fy[i] * s.invMass[i];
-        s.omega[i] = m_halfOmega[i] + h * s.torque[i] * s.invInertia[i];
+        s.vx[i] = m_half[0][i] + h * s.fx[i] * s.invMass[i];
+        s.vy[i] = m_half[1][i] + h * s.fy[i] * s.invMass[i];
+        s.omega[i] = m_half[2][i] + h * s.torque[i] * s.invInertia[i];
     }
+    return true;
 }
 
-void VelocityVerlet::permute(const std::vector<std::uint32_t>& order) {
-    if (m_halfVx.size() != order.size()) return;  // no step in progress yet
-    for (auto* col : {&m_halfVx, &m_halfVy, &m_halfOmega}) {
-        std::vector<Real> out(order.size());
-        for (std::size_t k = 0; k < order.size(); ++k) out[k] = (*col)[order[k]];
-        col->swap(out);
+// ------------------------------------------------------------------ explicit Euler
+
+Real ExplicitEuler::predict(model::ParticleStore& s, Real dt) noexcept {
+    const std::size_t n = s.size();
+    m_old.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        m_old[0][i] = s.vx[i];
+        m_old[1][i] = s.vy[i];
+        m_old[2][i] = s.omega[i];
+        s.x[i] += dt * s.vx[i];
+        s.y[i] += dt * s.vy[i];
+        s.angle[i] += dt * s.omega[i];
+        s.vx[i] += dt * s.fx[i] * s.invMass[i];
+        s.vy[i] += dt * s.fy[i] * s.invMass[i];
+        s.omega[i] += dt * s.torque[i] * s.invInertia[i];
     }
+    return maxSpeed(s);
 }
 
-std::unique_ptr<Integrator> makeIntegrator(const std::string& name) {
-    if (name == "verlet") return std::make_unique<VelocityVerlet>();
+bool ExplicitEuler::correct(model::ParticleStore&, Real, int) noexcept { return true; }
+
+// ------------------------------------------------------------------ cfddem predictor-corrector
+
+DriftVelocities PredictorCorrector::driftVelocities() const noexcept { return {m_state[6], m_state[7], m_state[8]}; }
+
+Real PredictorCorrector::predict(model::ParticleStore& s, Real dt) noexcept {
+    const std::size_t n = s.size();
+    m_state.resize(n);
+    Real* ap[3] = {m_state[0], m_state[1], m_state[2]};
+    Real* vn[3] = {m_state[3], m_state[4], m_state[5]};
+    Real* drift[3] = {m_state[6], m_state[7], m_state[8]};
+    Real* pos[3] = {s.x.data(), s.y.data(), s.angle.data()};
+    Real* vel[3] = {s.vx.data(), s.vy.data(), s.omega.data()};
+    const Real* force[3] = {s.fx.data(), s.fy.data(), s.torque.data()};
+    const Real* inv[3] = {s.invMass.data(), s.invMass.data(), s.invInertia.data()};
+    for (int d = 0; d < 3; ++d)
+        for (std::size_t i = 0; i < n; ++i) {
+            const Real a = force[d][i] * inv[d][i];  // acceleration accepted at t (Eq. 3.16-3.19)
+            ap[d][i] = a;
+            vn[d][i] = vel[d][i];
+            pos[d][i] += vel[d][i] * dt + 0.5 * a * dt * dt;
+            vel[d][i] += a * dt;
+            drift[d][i] = m_maxIterations == 0 ? vel[d][i] : 0.5 * (vn[d][i] + vel[d][i]);
+        }
+    return maxSpeed(s);
+}
+
+bool PredictorCorrector::correct(model::ParticleStore& s, Real dt, int iteration) noexcept {
+    if (m_maxIterations == 0) return true;  // modified explicit Euler: accept the prediction
+    const std::size_t n = s.size();
+    Real* ap[3] = {m_state[0], m_state[1], m_state[2]};
+    Real* vn[3] = {m_state[3], m_state[4], m_state[5]};
+    Real* drift[3] = {m_state[6], m_state[7], m_state[8]};
+    Real* pos[3] = {s.x.data(), s.y.data(), s.angle.data()};
+    Real* vel[3] = {s.vx.data(), s.vy.data(), s.omega.data()};
+    const Real* force[3] = {s.fx.data(), s.fy.data(), s.torque.data()};
+    const Real* inv[3] = {s.invMass.data(), s.invMass.data(), s.invInertia.data()};
+    Real worst = 0;  // Eq. 3.24: the largest |a^c - a^p| over all particles and components
+    for (int d = 0; d < 3; ++d)
+        for (std::size_t i = 0; i < n; ++i) {
+            const Real delta = std::abs(force[d][i] * inv[d][i] - ap[d][i]);
+            worst = (delta > worst || delta != delta) ? delta : worst;
+        }
+    if (worst <= m_tolerance || iteration >= m_maxIterations || worst != worst) return true;
+    const Real c = m_corrector;
+    for (int d = 0; d < 3; ++d)
+        for (std::size_t i = 0; i < n; ++i) {
+            const Real da = force[d][i] * inv[d][i] - ap[d][i];
+            pos[d][i] += 0.25 * c * da * dt * dt;  // Eq. 3.25
+            vel[d][i] += 0.5 * c * da * dt;         // Eq. 3.26
+            ap[d][i] += c * da;                     // Eq. 3.27
+            drift[d][i] = 0.5 * (vn[d][i] + vel[d][i]);
+        }
+    return false;
+}
+
+// ------------------------------------------------------------------ gc2d Gear 6-value PC
+
+Real GearPredictorCorrector::predict(model::ParticleStore& s, Real dt) noexcept {
+    const std::size_t n = s.size();
+    m_state.resize(n);
+    Real* pos[3] = {s.x.data(), s.y.data(), s.angle.data()};
+    Real* vel[3] = {s.vx.data(), s.vy.data(), s.omega.data()};
+    const Real* force[3] = {s.fx.data(), s.fy.data(), s.torque.data()};
+    const Real* inv[3] = {s.invMass.data(), s.invMass.data(), s.invInertia.data()};
+    for (int d = 0; d < 3; ++d) {
+        Real* r2 = m_state[4 * d];
+        Real* r3 = m_state[4 * d + 1];
+        Real* r4 = m_state[4 * d + 2];
+        Real* r5 = m_state[4 * d + 3];
+        Real* drift = m_state[12 + d];
+        for (std::size_t i = 0; i < n; ++i) {
+            if (!m_started) {  // start from the forces at t = 0, higher derivatives zero
+                r2[i] = 0.5 * dt * dt * force[d][i] * inv[d][i];
+                r3[i] = r4[i] = r5[i] = 0;
+            }
+            const Real r1 = vel[d][i] * dt;
+            // Pascal-matrix predictor (Eq. F.11), each row using the old higher values.
+            const Real dr0 = r1 + r2[i] + r3[i] + r4[i] + r5[i];
+            pos[d][i] += dr0;
+            vel[d][i] = (r1 + 2 * r2[i] + 3 * r3[i] + 4 * r4[i] + 5 * r5[i]) / dt;
+            r2[i] += 3 * r3[i] + 6 * r4[i] + 10 * r5[i];
+            r3[i] += 4 * r4[i] + 10 * r5[i];
+            r4[i] += 5 * r5[i];
+            drift[i] = dr0 / dt;
+        }
+    }
+    m_started = true;
+    return maxSpeed(s);
+}
+
+bool GearPredictorCorrector::correct(model::ParticleStore& s, Real dt, int) noexcept {
+    constexpr Real c1 = 251.0 / 360.0, c3 = 11.0 / 18.0, c4 = 1.0 / 6.0, c5 = 1.0 / 60.0;  // Table F.1, p = 2
+    const std::size_t n = s.size();
+    Real* pos[3] = {s.x.data(), s.y.data(), s.angle.data()};
+    Real* vel[3] = {s.vx.data(), s.vy.data(), s.omega.data()};
+    const Real* force[3] = {s.fx.data(), s.fy.data(), s.torque.data()};
+    const Real* inv[3] = {s.invMass.data(), s.invMass.data(), s.invInertia.data()};
+    for (int d = 0; d < 3; ++d) {
+        Real* r2 = m_state[4 * d];
+        Real* r3 = m_state[4 * d + 1];
+        Real* r4 = m_state[4 * d + 2];
+        Real* r5 = m_state[4 * d + 3];
+        for (std::size_t i = 0; i < n; ++i) {
+            const Real delta = 0.5 * dt * dt * force[d][i] * inv[d][i] - r2[i];  // Eq. F.13
+            pos[d][i] += m_c0 * delta;
+            vel[d][i] += c1 * delta / dt;
+            r2[i] += delta;
+            r3[i] += c3 * delta;
+            r4[i] += c4 * delta;
+            r5[i] += c5 * delta;
+        }
+    }
+    return true;
+}
+
+void GearPredictorCorrector::save(std::ostream& os) const {
+    writePod<std::uint8_t>(os, m_started ? 1 : 0);
+    for (int k = 0; k < 12; ++k) writeVector(os, m_state.columns[static_cast<std::size_t>(k)]);
+}
+
+void GearPredictorCorrector::load(std::istream& is, std::size_t particles) {
+    m_started = readPod<std::uint8_t>(is) != 0;
+    for (int k = 0; k < 12; ++k) readVector(is, m_state.columns[static_cast<std::size_t>(k)]);
+    m_state.columns[12].resize(particles);
+    m_state.columns[13].resize(particles);
+    m_state.columns[14].resize(particles);
+}
+
+// ------------------------------------------------------------------ factory
+
+std::unique_ptr<Integrator> makeIntegrator(const IntegratorParams& p) {
+    if (p.name == "verlet") return std::make_unique<VelocityVerlet>();
+    if (p.name == "euler") return std::make_unique<ExplicitEuler>();
+    if (p.name == "pc") return std::make_unique<PredictorCorrector>(p.tolerance, p.maxIterations, p.corrector);
+    if (p.name == "gear") return std::make_unique<GearPredictorCorrector>(p.gearC0);
     return nullptr;
 }
 
-std::vector<std::string> integratorNames() { return {"verlet"}; }
+std::vector<std::string> integratorNames() { return {"verlet", "euler", "pc", "gear"}; }
 
 }  // namespace granulab::dem

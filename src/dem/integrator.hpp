@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: MIT
 // Time integrators behind one coarse-grained interface (DESIGN.md stages 1 and 7; virtual call
-// once per stage per step). Velocity Verlet now; Euler, predictor-corrector and Gear come with
-// issue 3 through the same interface.
+// once per stage per step, never per particle): velocity Verlet, explicit Euler, the cfddem
+// seed's predictor-corrector iteration (spec/cfddem.md section 2; modified Euler with 0
+// iterations) and the 6-value Gear predictor-corrector of gc2d (spec/gc2d.md section 4).
 #pragma once
 #include <cstdint>
+#include <iosfwd>
 #include <memory>
 #include <string>
 #include <vector>
@@ -13,28 +15,58 @@
 namespace granulab::dem {
 
 /// Velocities that moved the particles during the current step (the drift velocities): contact
-/// laws integrate tangential displacements with them. Null pointers: no displacement (set-up).
+/// laws integrate tangential displacements with them, so that the spring increment matches the
+/// integrator (spec/cfddem.md section 3.6). Null pointers: no displacement (set-up).
 struct DriftVelocities {
     const Real* vx = nullptr;
     const Real* vy = nullptr;
     const Real* omega = nullptr;
 };
 
+/// Parameters of all integrators (each uses its own).
+struct IntegratorParams {
+    std::string name = "verlet";
+    Real tolerance = 1e-5;    ///< pc: |a^c - a^p| threshold [m/s^2, rad/s^2]
+    int maxIterations = 10;   ///< pc: corrector iterations (0: modified explicit Euler)
+    Real corrector = 0.5;     ///< pc: relaxation factor c in (0, 1]
+    Real gearC0 = 3.0 / 16.0; ///< gear: first corrector coefficient (3/16 for velocity-dependent forces)
+};
+
 class Integrator {
 public:
     virtual ~Integrator() = default;
     virtual const char* name() const noexcept = 0;
-    /// Stage 1: advance positions to t + dt using the forces of the last evaluation.
-    /// Returns the largest speed [m/s] seen (for the tunnelling guard).
+    /// Stage 1: advance the state to the trial state at t + dt from the accepted state at t and
+    /// the forces evaluated there. Returns the largest speed [m/s] (tunnelling guard).
     virtual Real predict(model::ParticleStore& s, Real dt) noexcept = 0;
-    /// Stage 7: complete the step with the forces at t + dt.
-    virtual void correct(model::ParticleStore& s, Real dt) noexcept = 0;
+    /// Stage 7 after a force evaluation at the trial state: returns true when the step is
+    /// accepted; false asks for another force evaluation at the updated trial state.
+    virtual bool correct(model::ParticleStore& s, Real dt, int iteration) noexcept = 0;
     /// The drift velocities of the step in progress (valid between predict and correct).
     virtual DriftVelocities driftVelocities() const noexcept = 0;
-    /// Reorders per-particle integrator state after the store was permuted (new k = old order[k]).
+    /// True if every step has exactly one force evaluation (contact history is then updated in
+    /// place; otherwise trial values are committed once per accepted step).
+    virtual bool singleEvaluation() const noexcept { return true; }
+    /// Reorders per-particle state after the store was permuted (new k = old order[k]).
     virtual void permute(const std::vector<std::uint32_t>& order) = 0;
     /// Bytes of per-particle integrator state.
     virtual std::size_t memoryBytes() const noexcept = 0;
+    /// State that must survive a checkpoint (default: none).
+    virtual void save(std::ostream&) const {}
+    virtual void load(std::istream&, std::size_t /*particles*/) {}
+};
+
+/// Columns of per-particle integrator state, reordered and sized together.
+struct StateColumns {
+    std::vector<std::vector<Real>> columns;
+    explicit StateColumns(std::size_t count) : columns(count) {}
+    void resize(std::size_t n) {
+        for (auto& c : columns) c.resize(n);
+    }
+    void permute(const std::vector<std::uint32_t>& order);
+    std::size_t bytes() const noexcept;
+    Real* operator[](std::size_t k) noexcept { return columns[k].data(); }
+    const Real* operator[](std::size_t k) const noexcept { return columns[k].data(); }
 };
 
 /// Velocity Verlet (kick-drift-kick), second order and symplectic for conservative forces.
@@ -47,20 +79,81 @@ class VelocityVerlet final : public Integrator {
 public:
     const char* name() const noexcept override { return "verlet"; }
     Real predict(model::ParticleStore& s, Real dt) noexcept override;
-    void correct(model::ParticleStore& s, Real dt) noexcept override;
-    DriftVelocities driftVelocities() const noexcept override {
-        return {m_halfVx.data(), m_halfVy.data(), m_halfOmega.data()};
-    }
-    void permute(const std::vector<std::uint32_t>& order) override;
-    std::size_t memoryBytes() const noexcept override {
-        return (m_halfVx.capacity() + m_halfVy.capacity() + m_halfOmega.capacity()) * sizeof(Real);
-    }
+    bool correct(model::ParticleStore& s, Real dt, int iteration) noexcept override;
+    DriftVelocities driftVelocities() const noexcept override { return {m_half[0], m_half[1], m_half[2]}; }
+    void permute(const std::vector<std::uint32_t>& order) override { m_half.permute(order); }
+    std::size_t memoryBytes() const noexcept override { return m_half.bytes(); }
 
 private:
-    std::vector<Real> m_halfVx, m_halfVy, m_halfOmega;  ///< [m/s], [rad/s] v(t + dt/2)
+    StateColumns m_half{3};  ///< v(t + dt/2): vx, vy [m/s], omega [rad/s]
 };
 
-std::unique_ptr<Integrator> makeIntegrator(const std::string& name);
+/// Explicit (forward) Euler: x += v dt, v += a dt with the forces at t. First order; for
+/// comparison and teaching, not for production runs.
+class ExplicitEuler final : public Integrator {
+public:
+    const char* name() const noexcept override { return "euler"; }
+    Real predict(model::ParticleStore& s, Real dt) noexcept override;
+    bool correct(model::ParticleStore& s, Real dt, int iteration) noexcept override;
+    DriftVelocities driftVelocities() const noexcept override { return {m_old[0], m_old[1], m_old[2]}; }
+    void permute(const std::vector<std::uint32_t>& order) override { m_old.permute(order); }
+    std::size_t memoryBytes() const noexcept override { return m_old.bytes(); }
+
+private:
+    StateColumns m_old{3};  ///< v(t) that moved the particles during the step
+};
+
+/// The cfddem seed's predictor-corrector iteration (spec section 2.4): Taylor predictor with the
+/// last acceleration, then relaxed corrections r += c Da dt^2/4, v += c Da dt/2, a += c Da until
+/// every |Da| <= tolerance or maxIterations; the converged scheme is the trapezoidal (Newmark
+/// beta = 1/4, gamma = 1/2) rule. maxIterations = 0 is the seed's "modified explicit Euler".
+/// Tangential springs grow with the trapezoidal increment dt (v_n + v^p)/2 when iterating, and
+/// with v^p dt for modified Euler (spec section 3.6).
+class PredictorCorrector final : public Integrator {
+public:
+    PredictorCorrector(Real tolerance, int maxIterations, Real corrector)
+        : m_tolerance(tolerance), m_maxIterations(maxIterations), m_corrector(corrector) {}
+    const char* name() const noexcept override { return "pc"; }
+    Real predict(model::ParticleStore& s, Real dt) noexcept override;
+    bool correct(model::ParticleStore& s, Real dt, int iteration) noexcept override;
+    DriftVelocities driftVelocities() const noexcept override;
+    bool singleEvaluation() const noexcept override { return m_maxIterations == 0; }
+    void permute(const std::vector<std::uint32_t>& order) override { m_state.permute(order); }
+    std::size_t memoryBytes() const noexcept override { return m_state.bytes(); }
+
+private:
+    Real m_tolerance;
+    int m_maxIterations;
+    Real m_corrector;
+    /// a^p (3), v_n (3), drift (3): accelerations [m/s^2, rad/s^2], velocities [m/s, rad/s].
+    StateColumns m_state{9};
+};
+
+/// Gear predictor-corrector with 6 values per degree of freedom (gc2d Appendix F, Eq. F.10-F.13):
+/// scaled derivatives r_n = dt^n/n! d^n r/dt^n, Pascal-matrix predictor, one force evaluation at
+/// the predicted position and velocity, corrector r_n += c_n (dt^2/2 a - r_2) with
+/// c = (c0, 251/360, 1, 11/18, 1/6, 1/60), c0 = 3/16 by default (velocity-dependent forces).
+class GearPredictorCorrector final : public Integrator {
+public:
+    explicit GearPredictorCorrector(Real c0) : m_c0(c0) {}
+    const char* name() const noexcept override { return "gear"; }
+    Real predict(model::ParticleStore& s, Real dt) noexcept override;
+    bool correct(model::ParticleStore& s, Real dt, int iteration) noexcept override;
+    DriftVelocities driftVelocities() const noexcept override { return {m_state[12], m_state[13], m_state[14]}; }
+    void permute(const std::vector<std::uint32_t>& order) override { m_state.permute(order); }
+    std::size_t memoryBytes() const noexcept override { return m_state.bytes(); }
+    void save(std::ostream& os) const override;
+    void load(std::istream& is, std::size_t particles) override;
+
+private:
+    Real m_c0;
+    bool m_started = false;  ///< r2..r5 initialised from the first forces
+    /// r2..r5 for x, y, phi (columns 4 d + k, d = 0..2, k = 0..3, scaled [m] or [rad]), then the
+    /// drift velocities of the step (12..14).
+    StateColumns m_state{15};
+};
+
+std::unique_ptr<Integrator> makeIntegrator(const IntegratorParams& params);
 std::vector<std::string> integratorNames();
 
 }  // namespace granulab::dem

@@ -56,7 +56,7 @@ std::vector<OldHistory> collectHistory(const ContactList& list, const std::vecto
 /// Buckets sorted keys by law form and restores history.
 template <class MaterialOfSecond>
 void fillList(ContactList& list, const std::vector<std::uint64_t>& keys, const std::vector<OldHistory>& old,
-              const model::ParticleStore& s, const LawTable& laws, MaterialOfSecond materialOfSecond) {
+              const model::ParticleStore& s, const LawTable& laws, bool trialHistory, MaterialOfSecond materialOfSecond) {
     const std::uint32_t forms = std::max<std::uint32_t>(laws.formCount(), 1);
     list.bucketStart.assign(forms + 1, 0);
     std::vector<std::uint32_t> formOfKey(keys.size());
@@ -70,6 +70,7 @@ void fillList(ContactList& list, const std::vector<std::uint64_t>& keys, const s
     list.first.resize(keys.size());
     list.second.resize(keys.size());
     list.xi.assign(keys.size(), 0.0);
+    if (!list.xiTrial.empty() || trialHistory) list.xiTrial.assign(keys.size(), 0.0);
     std::vector<std::uint32_t> fill(list.bucketStart.begin(), list.bucketStart.end() - 1);
     for (std::size_t k = 0; k < keys.size(); ++k) {
         const std::uint32_t pos = fill[formOfKey[k]]++;
@@ -83,14 +84,15 @@ void fillList(ContactList& list, const std::vector<std::uint64_t>& keys, const s
 }  // namespace
 
 void NeighborList::rebuild(const model::ParticleStore& s, const model::WallSet& walls, Real skin, Real time,
-                           BroadPhase& broad, const LawTable& laws, const std::vector<std::uint32_t>& oldToNew) {
+                           BroadPhase& broad, const LawTable& laws, const std::vector<std::uint32_t>& oldToNew,
+                           bool trialHistory) {
     const auto oldPairs = collectHistory(pairs, oldToNew, true);
     const auto oldWall = collectHistory(wallPairs, oldToNew, false);
     std::vector<std::uint64_t> keys;
     broad.findPairs(s, skin, keys);
-    fillList(pairs, keys, oldPairs, s, laws, [&](std::uint32_t j) { return s.material[j]; });
+    fillList(pairs, keys, oldPairs, s, laws, trialHistory, [&](std::uint32_t j) { return s.material[j]; });
     broad.findWallPairs(s, walls, skin, keys);
-    fillList(wallPairs, keys, oldWall, s, laws, [&](std::uint32_t seg) { return walls.segments[seg].material; });
+    fillList(wallPairs, keys, oldWall, s, laws, trialHistory, [&](std::uint32_t seg) { return walls.segments[seg].material; });
     x0 = s.x;
     y0 = s.y;
     wallTime0 = time;

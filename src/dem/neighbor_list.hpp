@@ -17,12 +17,16 @@ namespace granulab::dem {
 
 struct ContactList {
     std::vector<std::uint32_t> first, second;  ///< slots (pairs) or slot + segment (walls)
-    std::vector<Real> xi;                      ///< [m] tangential spring, along t = perp(n)
+    std::vector<Real> xi;                      ///< [m] tangential spring, along t = perp(n) (accepted)
+    std::vector<Real> xiTrial;                 ///< [m] trial springs of an iterating integrator
     std::vector<std::uint32_t> bucketStart;    ///< formCount + 1 offsets
+
+    /// Accepts the trial springs of the step (iterating integrators only).
+    void commitHistory() noexcept { xi.swap(xiTrial); }
 
     std::size_t size() const noexcept { return first.size(); }
     std::size_t memoryBytes() const noexcept {
-        return first.capacity() * 4 + second.capacity() * 4 + xi.capacity() * sizeof(Real) +
+        return first.capacity() * 4 + second.capacity() * 4 + (xi.capacity() + xiTrial.capacity()) * sizeof(Real) +
                bucketStart.capacity() * 4;
     }
 };
@@ -38,11 +42,17 @@ public:
     /// True if some particle may have moved into range since the last rebuild: the largest
     /// displacement plus the wall travel exceeds skin/2 (or is not finite).
     bool needsRebuild(const model::ParticleStore& s, Real skin, Real wallTravel) const noexcept;
+    void commitHistory() noexcept {
+        pairs.commitHistory();
+        wallPairs.commitHistory();
+    }
 
     /// Rebuilds both lists. `oldToNew` (may be empty) maps old slots to new ones when the store
     /// was just permuted, so that history follows its particles.
+    /// `trialHistory` allocates trial springs for integrators with several force evaluations.
     void rebuild(const model::ParticleStore& s, const model::WallSet& walls, Real skin, Real time,
-                 BroadPhase& broad, const LawTable& laws, const std::vector<std::uint32_t>& oldToNew);
+                 BroadPhase& broad, const LawTable& laws, const std::vector<std::uint32_t>& oldToNew,
+                 bool trialHistory);
 
     std::size_t memoryBytes() const noexcept {
         return pairs.memoryBytes() + wallPairs.memoryBytes() + (x0.capacity() + y0.capacity()) * sizeof(Real);

@@ -149,7 +149,11 @@ WorldConfig makeWorldConfig(const model::SceneDef& scene, Real maxRadius) {
     c.dt = scene.dem.dt;
     c.gravity = scene.dem.gravity;
     c.skin = scene.dem.skin >= 0 ? scene.dem.skin : 0.2 * maxRadius;
-    c.integrator = scene.dem.integrator;
+    c.integrator.name = scene.dem.integrator;
+    c.integrator.tolerance = scene.dem.pcTolerance;
+    c.integrator.maxIterations = static_cast<int>(scene.dem.pcIterations);
+    c.integrator.corrector = scene.dem.pcCorrector;
+    c.integrator.gearC0 = scene.dem.gearC0;
     c.broadPhase = scene.dem.broadPhase;
     c.sortEveryRebuilds = static_cast<int>(scene.dem.sortEvery);
     c.overlapGuard = scene.dem.overlapGuard ? 0.01 : 0.0;

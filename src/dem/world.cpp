@@ -33,7 +33,7 @@ World::World(WorldConfig config, model::ParticleStore store, model::WallSet wall
       m_integrator(makeIntegrator(m_config.integrator)),
       m_wallForce(m_walls.walls.size()) {
     if (!m_broad) throw std::invalid_argument("unknown broad phase " + m_config.broadPhase);
-    if (!m_integrator) throw std::invalid_argument("unknown integrator " + m_config.integrator);
+    if (!m_integrator) throw std::invalid_argument("unknown integrator " + m_config.integrator.name);
     m_minRadius = m_store.size() ? *std::min_element(m_store.radius.begin(), m_store.radius.end()) : 0;
 }
 
@@ -61,15 +61,16 @@ void World::rebuildNeighbors() {
             for (std::size_t k = 0; k < order.size(); ++k) oldToNew[order[k]] = static_cast<std::uint32_t>(k);
         }
     }
-    m_list.rebuild(m_store, m_walls, m_config.skin, time(), *m_broad, m_laws, oldToNew);
+    m_list.rebuild(m_store, m_walls, m_config.skin, time(), *m_broad, m_laws, oldToNew,
+                   !m_integrator->singleEvaluation());
 }
 
 void World::initialize() {
     m_walls.setTime(time());
     rebuildNeighbors();
     // Set-up evaluation: nothing has moved yet, so no tangential displacement (drift = none).
-    computeForces(m_store, m_walls, m_list, m_laws, bodyForcesAt(m_step), DriftVelocities{}, m_config.dt, m_stats,
-                  m_wallForce);
+    computeForces(m_store, m_walls, m_list, m_laws, bodyForcesAt(m_step), DriftVelocities{}, m_config.dt, false,
+                  m_stats, m_wallForce);
 }
 
 std::uint32_t World::step() {
@@ -93,15 +94,25 @@ std::uint32_t World::step() {
         const Real wallTravel = m_walls.maxDisplacement(m_list.wallTime0, time());
         if (m_list.needsRebuild(m_store, m_config.skin, wallTravel)) rebuildNeighbors();
     }
-    {  // 4+6 narrow phase + contact laws + body forces. reads: x, v, omega; writes: f, torque, history
-        ScopedStage t(m_timers, Stage::Forces);
-        computeForces(m_store, m_walls, m_list, m_laws, bodyForcesAt(m_step), m_integrator->driftVelocities(), dt,
-                      m_stats, m_wallForce);
+    // 4+6+7: force evaluation(s) at the trial state and correction, until the integrator accepts.
+    // Iterating integrators see trial springs; the accepted ones are committed once per step.
+    const bool trial = !m_integrator->singleEvaluation();
+    const BodyForces body = bodyForcesAt(m_step);
+    for (int iteration = 0;; ++iteration) {
+        {  // 4+6 narrow phase + contact laws + body forces. reads: x, v, omega; writes: f, torque, history
+            ScopedStage t(m_timers, Stage::Forces);
+            computeForces(m_store, m_walls, m_list, m_laws, body, m_integrator->driftVelocities(), dt, trial, m_stats,
+                          m_wallForce);
+        }
+        ++m_forceEvaluations;
+        bool accepted;
+        {  // 7 correct. reads: f, torque; writes: x, v, omega
+            ScopedStage t(m_timers, Stage::Correct);
+            accepted = m_integrator->correct(m_store, dt, iteration);
+        }
+        if (accepted) break;
     }
-    {  // 7 correct. reads: f, torque; writes: v, omega
-        ScopedStage t(m_timers, Stage::Correct);
-        m_integrator->correct(m_store, dt);
-    }
+    if (trial) m_list.commitHistory();
     if (m_stats.maxRelativeOverlap >= 1.0) status |= kStepDeepOverlap;
     return status;
 }
@@ -162,6 +173,8 @@ void World::saveState(std::ostream& os) const {
     writeVector(os, m_list.y0);
     writePod(os, m_list.wallTime0);
     writePod(os, m_list.builds);
+    writePod(os, m_forceEvaluations);
+    m_integrator->save(os);
 }
 
 void World::loadState(std::istream& is) {
@@ -179,6 +192,12 @@ void World::loadState(std::istream& is) {
     readVector(is, m_list.y0);
     m_list.wallTime0 = readPod<Real>(is);
     m_list.builds = readPod<std::uint64_t>(is);
+    m_forceEvaluations = readPod<std::uint64_t>(is);
+    m_integrator->load(is, s.size());
+    if (!m_integrator->singleEvaluation()) {
+        m_list.pairs.xiTrial.assign(m_list.pairs.size(), 0.0);
+        m_list.wallPairs.xiTrial.assign(m_list.wallPairs.size(), 0.0);
+    }
     m_walls.setTime(time());
     m_minRadius = s.size() ? *std::min_element(s.radius.begin(), s.radius.end()) : 0;
     // Wall forces of the restored step are re-derived at the next step; stats start empty.

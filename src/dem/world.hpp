@@ -37,7 +37,7 @@ struct WorldConfig {
     Real skin = 0;                    ///< [m] neighbour-list skin
     int sortEveryRebuilds = 16;       ///< spatial re-sort of slots every k-th rebuild (0: never)
     Real overlapGuard = 0;            ///< see BodyForces::overlapGuard
-    std::string integrator = "verlet";
+    IntegratorParams integrator;
     std::string broadPhase = "cell_grid";
 };
 
@@ -79,6 +79,8 @@ public:
     const StageTimers<Stage>& timers() const noexcept { return m_timers; }
     const char* broadPhaseName() const noexcept { return m_broad->name(); }
     const char* integratorName() const noexcept { return m_integrator->name(); }
+    /// Force evaluations since t = 0 (more than the steps for an iterating predictor-corrector).
+    std::uint64_t forceEvaluations() const noexcept { return m_forceEvaluations; }
 
     Energies energies() const noexcept;
     /// Total linear momentum [kg m/s].
@@ -105,6 +107,7 @@ private:
     std::vector<Vec2> m_wallForce;
     StageTimers<Stage> m_timers;
     std::int64_t m_step = 0;
+    std::uint64_t m_forceEvaluations = 0;
     Real m_minRadius = 0;
 };
 

@@ -226,6 +226,10 @@ void readDem(TableReader& r, model::DemDef& dem) {
     if (!r.number("dt", dem.dt) && !r.table().get("dt"))
         r.diags().error(dem.loc, "dem.dt", "missing: time step [s], allowed (0, inf); `granulab info` advises one");
     r.string("integrator", dem.integrator);
+    r.number("pc_tolerance", dem.pcTolerance);
+    r.integer("pc_iterations", dem.pcIterations);
+    r.number("pc_corrector", dem.pcCorrector);
+    r.number("gear_c0", dem.gearC0);
     r.string("broad_phase", dem.broadPhase);
     r.number("skin", dem.skin);
     r.choice("mass_model", dem.massModel, {"disk", "sphere"});

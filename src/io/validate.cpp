@@ -74,6 +74,13 @@ void checkStatic(const model::SceneDef& sc, Checker& c, const std::vector<std::s
     if (sc.dem.dt > 0 && sc.run.endTime > 0 && sc.dem.dt > sc.run.endTime)
         d.error(sc.dem.loc, "dem.dt", fmt::format("dt = {} s exceeds run.end_time = {} s", sc.dem.dt, sc.run.endTime));
     c.oneOf(sc.dem.loc, "dem.integrator", sc.dem.integrator, dem::integratorNames());
+    c.positive(sc.dem.loc, "dem.pc_tolerance", sc.dem.pcTolerance, "m/s^2");
+    if (sc.dem.pcIterations < 0 || sc.dem.pcIterations > 1000)
+        d.error(sc.dem.loc, "dem.pc_iterations", fmt::format("must be in [0, 1000] (0: modified Euler), got {}", sc.dem.pcIterations));
+    if (!(sc.dem.pcCorrector > 0 && sc.dem.pcCorrector <= 1))
+        d.error(sc.dem.loc, "dem.pc_corrector", fmt::format("must be in (0, 1], got {}", sc.dem.pcCorrector));
+    if (!(sc.dem.gearC0 > 0 && sc.dem.gearC0 < 1))
+        d.error(sc.dem.loc, "dem.gear_c0", fmt::format("must be in (0, 1) (3/20 textbook, 3/16 velocity-dependent), got {}", sc.dem.gearC0));
     c.oneOf(sc.dem.loc, "dem.broad_phase", sc.dem.broadPhase, dem::broadPhaseNames());
     c.oneOf(sc.dem.loc, "dem.mass_model", sc.dem.massModel, {"disk", "sphere"});
     if (sc.dem.sortEvery < 0 || sc.dem.sortEvery > 1000000)

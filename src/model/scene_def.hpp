@@ -35,7 +35,11 @@ struct DampingWindowDef {
 
 struct DemDef {
     Real dt = 0;                          ///< [s] time step (required)
-    std::string integrator = "verlet";    ///< see dem/integrator registry
+    std::string integrator = "verlet";    ///< verlet | euler | pc (cfddem seed) | gear (gc2d)
+    Real pcTolerance = 1e-5;              ///< pc: |a^c - a^p| threshold [m/s^2]
+    std::int64_t pcIterations = 10;       ///< pc: corrector iterations, 0 = modified explicit Euler
+    Real pcCorrector = 0.5;               ///< pc: relaxation factor in (0, 1]
+    Real gearC0 = 3.0 / 16.0;             ///< gear: first corrector coefficient
     std::string broadPhase = "cell_grid"; ///< "cell_grid" | "brute_force"
     Real skin = -1;                       ///< [m] neighbour-list skin; <0: 0.2 * largest radius
     std::string massModel = "disk";       ///< "disk": m = rho pi r^2, I = m r^2/2; "sphere": m = 4/3 rho pi r^3, I = 2/5 m r^2
