@@ -3,9 +3,11 @@
 // disk-wall pairs within a distance margin. Called only when the neighbour list is rebuilt, so
 // the virtual call is per rebuild, not per pair. Brute force is the test reference.
 #pragma once
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 #include "model/particle_store.hpp"
@@ -62,6 +64,36 @@ private:
     std::vector<std::uint32_t> m_cellStart;  ///< size cells + 1
     std::vector<std::uint32_t> m_sorted;     ///< slots grouped by cell
     std::vector<std::uint32_t> m_cellOf;     ///< cell of each slot
+};
+
+/// Incremental sort-and-sweep on bounding boxes (gc2d spec section 5.2): endpoint lists kept
+/// sorted between calls by insertion sort, overlapping boxes updated by the swap rules, so a
+/// call costs O(N) for slowly moving particles; appended particles are inserted without a full
+/// re-sort. Walls use a cell grid. See sort_and_sweep.cpp.
+class SortAndSweep final : public BroadPhase {
+public:
+    const char* name() const noexcept override { return "sort_and_sweep"; }
+    void findPairs(const model::ParticleStore& s, Real margin, std::vector<std::uint64_t>& out) override;
+    void findWallPairs(const model::ParticleStore& s, const model::WallSet& walls, Real margin,
+                       std::vector<std::uint64_t>& out) override;
+    std::size_t memoryBytes() const noexcept override;
+
+private:
+    struct Endpoint {
+        Real value;
+        std::uint32_t box;
+        bool isEnd;
+    };
+    void updateBoxes(const model::ParticleStore& s, Real margin);
+    void sortAxis(int axis);
+    bool overlapOn(int axis, std::uint32_t a, std::uint32_t b) const noexcept;
+
+    std::vector<Endpoint> m_xs, m_ys;                ///< sorted endpoint lists
+    std::vector<std::array<Real, 4>> m_box;          ///< [bx, ex, by, ey] per slot [m]
+    std::unordered_set<std::uint64_t> m_overlaps;    ///< overlapping box pairs (slot keys)
+    std::size_t m_tracked = 0;                       ///< slots in the lists
+    Real m_margin = -1;
+    CellGrid m_wallGrid;
 };
 
 std::unique_ptr<BroadPhase> makeBroadPhase(const std::string& name);

@@ -36,9 +36,10 @@ void BruteForce::findWallPairs(const model::ParticleStore& s, const model::WallS
 std::unique_ptr<BroadPhase> makeBroadPhase(const std::string& name) {
     if (name == "brute_force") return std::make_unique<BruteForce>();
     if (name == "cell_grid") return std::make_unique<CellGrid>();
+    if (name == "sort_and_sweep") return std::make_unique<SortAndSweep>();
     return nullptr;
 }
 
-std::vector<std::string> broadPhaseNames() { return {"cell_grid", "brute_force"}; }
+std::vector<std::string> broadPhaseNames() { return {"cell_grid", "sort_and_sweep", "brute_force"}; }
 
 }  // namespace granulab::dem

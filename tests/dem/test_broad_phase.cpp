@@ -48,3 +48,28 @@ TEST(BroadPhase, CellGridMatchesBruteForceOnPolydisperseScenes) {
         EXPECT_EQ(refW, gotW) << "n " << c.n;
     }
 }
+
+TEST(BroadPhase, SortAndSweepMatchesBruteForceWhileParticlesMoveAndArrive) {
+    model::ParticleStore s = randomScene(7, 600, 0.05, 0.8, 30);
+    dem::SortAndSweep sap;
+    dem::BruteForce brute;
+    CounterRng rng(99, 1);
+    std::vector<std::uint64_t> ref, got;
+    for (int round = 0; round < 30; ++round) {
+        const Real margin = 0.1;
+        sap.findPairs(s, margin, got);
+        brute.findPairs(s, margin, ref);
+        ASSERT_EQ(ref, got) << "round " << round;
+        // Move every particle a little (some far), and now and then add new particles.
+        for (std::size_t i = 0; i < s.size(); ++i) {
+            const Real step = (i % 50 == 0) ? 3.0 : 0.15;
+            s.x[i] += rng.uniform(-step, step);
+            s.y[i] += rng.uniform(-step, step);
+        }
+        if (round % 5 == 4)
+            for (int k = 0; k < 20; ++k)
+                s.add(static_cast<ParticleId>(s.size()), {rng.uniform(0, 30), rng.uniform(0, 30)}, {}, 0, 0,
+                      rng.uniform(0.05, 0.8), 1, 1, 0);
+    }
+    EXPECT_GT(ref.size(), 100u);
+}
