@@ -36,15 +36,14 @@ std::vector<OldHistory> collectHistory(const ContactList& list, const std::vecto
     for (std::size_t k = 0; k < list.size(); ++k) {
         if (list.xi[k] == 0) continue;
         std::uint32_t a = list.first[k], b = list.second[k];
-        Real xi = list.xi[k];
+        const Real xi = list.xi[k];
         if (!oldToNew.empty()) {
             a = oldToNew[a];
             if (bothAreSlots) {
                 b = oldToNew[b];
-                if (a > b) {  // the pair's normal and tangent flip with the order
-                    std::swap(a, b);
-                    xi = -xi;
-                }
+                // Exchanging the bodies flips n and t and the relative velocity, so v_t and the
+                // tangential spring xi are unchanged (forces.cpp: v_t = (v_i - v_j + ...) . t).
+                if (a > b) std::swap(a, b);
             }
         }
         out.push_back({pairKey(a, b), xi});
