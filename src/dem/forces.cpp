@@ -18,7 +18,7 @@ namespace {
 template <class N, class D, class T>
 ResolvedLaw<N, D, T> resolve(const ContactLaw& law) noexcept {
     return {*std::get_if<N>(&law.normal), *std::get_if<D>(&law.damping), *std::get_if<T>(&law.tangential),
-            law.clipAttraction};
+            law.clipAttraction, rollingSettings(law.rolling)};
 }
 
 /// Visits the form of a bucket with its concrete axis types.
@@ -76,6 +76,9 @@ void diskPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
     const std::uint32_t* __restrict pj = list.second.data();
     const Real* xiIn = list.xi.data();
     Real* xiOut = trialHistory ? list.xiTrial.data() : list.xi.data();
+    const bool rolling = laws.hasRolling();
+    const Real* zetaIn = list.zeta.data();
+    Real* zetaOut = trialHistory ? list.zetaTrial.data() : list.zeta.data();
     std::uint64_t contacts = 0;
     Real maxRel = stats.maxRelativeOverlap;
     for (std::uint32_t p = begin; p < end; ++p) {
@@ -86,6 +89,7 @@ void diskPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
         const Real r2 = dx * dx + dy * dy;
         if (r2 >= rsum * rsum) {
             xiOut[p] = 0;
+            if (rolling) zetaOut[p] = 0;
             continue;
         }
         ++contacts;
@@ -96,6 +100,7 @@ void diskPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
         if (overlapGuard > 0 && overlap > overlapGuard * (ri < rj ? ri : rj)) {  // seed's guard, off by default
             ++stats.guardSkips;
             xiOut[p] = xiIn[p];
+            if (rolling) zetaOut[p] = zetaIn[p];
             continue;
         }
         // Relative velocity of i's contact point w.r.t. j's: v_i - v_j + (w_i r_i + w_j r_j) perp(n).
@@ -110,12 +115,26 @@ void diskPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
         k.meff = mi * mj / (mi + mj);
         k.reff = ri * rj / rsum;
         k.dxt = 0;
-        if constexpr (!std::is_same_v<T, NoFriction>)
+        if (!std::is_same_v<T, NoFriction> || rolling)
             if (drift.vx) k.dxt = tangentialIncrement(drift, i, j, ri, rj, nx, ny, dt);
+        k.vroll = 0;
+        k.dxroll = 0;
+        Real zeta = 0;
+        if (rolling) {  // cfddem Eq. 3.58 along t
+            const Real sizeTerm = 0.5 * (rj - ri) / rsum;
+            k.vroll = -k.reff * (om[i] - om[j]) - sizeTerm * k.vt;
+            if (drift.vx) k.dxroll = -k.reff * (drift.omega[i] - drift.omega[j]) * dt - sizeTerm * k.dxt;
+            zeta = zetaIn[p];
+        }
         const auto law = resolve<N, D, T>(table[static_cast<std::size_t>(mat[i]) * nm + mat[j]]);
         Real xi = xiIn[p];
-        const ContactForce f = evaluateContact(law, k, xi);
+        const ContactForce f = evaluateContact(law, k, xi, zeta);
         xiOut[p] = xi;
+        if (rolling) {
+            zetaOut[p] = zeta;
+            tq[i] += f.rollingTorque;
+            tq[j] -= f.rollingTorque;
+        }
         // Force on i: -fn n + ft t.
         const Real fxi = -f.fn * nx - f.ft * ny;
         const Real fyi = -f.fn * ny + f.ft * nx;
@@ -148,8 +167,11 @@ void diskWalls(model::ParticleStore& s, const model::WallSet& walls, ContactList
         const auto g = geom::diskSegmentContact(c, r, seg.a, seg.b, seg.startShared, seg.endShared,
                                                 seg.prevDirection);
         Real* xiOut = trialHistory ? list.xiTrial.data() : list.xi.data();
+        const bool rolling = laws.hasRolling();
+        Real* zetaOut = trialHistory ? list.zetaTrial.data() : list.zeta.data();
         if (!g.touching || g.overlap <= 0) {
             xiOut[p] = 0;
+            if (rolling) zetaOut[p] = 0;
             continue;
         }
         ++contacts;
@@ -165,17 +187,29 @@ void diskWalls(model::ParticleStore& s, const model::WallSet& walls, ContactList
         k.meff = s.mass[i];
         k.reff = r;
         k.dxt = 0;
-        if constexpr (!std::is_same_v<T, NoFriction>) {
+        if (!std::is_same_v<T, NoFriction> || rolling) {
             if (drift.vx) {
                 const Real wh = drift.omega[i] * r;
                 const Vec2 vh{drift.vx[i] + wh * n.y - wallVel.x, drift.vy[i] - wh * n.x - wallVel.y};
                 k.dxt = dot(vh, perp(n)) * dt;
             }
         }
+        k.vroll = 0;
+        k.dxroll = 0;
+        Real zeta = 0;
+        if (rolling) {  // Eq. 3.58 with R_wall -> infinity, in the pair frame of the disk
+            k.vroll = -r * s.omega[i] + 0.5 * k.vt;
+            if (drift.vx) k.dxroll = -r * drift.omega[i] * dt + 0.5 * k.dxt;
+            zeta = list.zeta[p];
+        }
         const auto law = resolve<N, D, T>(table[static_cast<std::size_t>(s.material[i]) * nm + seg.material]);
         Real xi = list.xi[p];
-        const ContactForce f = evaluateContact(law, k, xi);
+        const ContactForce f = evaluateContact(law, k, xi, zeta);
         xiOut[p] = xi;
+        if (rolling) {
+            zetaOut[p] = zeta;
+            s.torque[i] += f.rollingTorque;
+        }
         const Real fxi = f.fn * n.x - f.ft * n.y;
         const Real fyi = f.fn * n.y + f.ft * n.x;
         s.fx[i] += fxi;
@@ -243,7 +277,7 @@ Real contactEnergy(const model::ParticleStore& s, const model::WallSet& walls, c
                 }
                 if (overlap <= 0) continue;
                 const auto law = resolve<N, D, T>(laws.laws()[static_cast<std::size_t>(s.material[i]) * nm + otherMat]);
-                energy += dem::contactEnergy(law, overlap, reff, cl.xi[p]);
+                energy += dem::contactEnergy(law, overlap, reff, cl.xi[p], cl.zeta.empty() ? 0.0 : cl.zeta[p]);
             }
         });
     };

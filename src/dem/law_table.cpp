@@ -21,6 +21,8 @@ void LawTable::set(std::uint32_t a, std::uint32_t b, const ContactLaw& law) {
 
 void LawTable::finalize() {
     m_formRep.clear();
+    m_hasRolling = false;
+    for (const auto& l : m_laws) m_hasRolling = m_hasRolling || rollingSettings(l.rolling).enabled;
     std::vector<std::array<std::size_t, 3>> signatures;
     for (std::size_t k = 0; k < m_laws.size(); ++k) {
         const auto& l = m_laws[k];

@@ -26,6 +26,8 @@ public:
     /// A law with the form's alternatives (parameters of some member pair).
     const ContactLaw& formRepresentative(std::uint32_t form) const noexcept { return m_formRep[form]; }
     const std::vector<ContactLaw>& laws() const noexcept { return m_laws; }
+    /// True if some material pair has rolling resistance (contacts then keep a rolling history).
+    bool hasRolling() const noexcept { return m_hasRolling; }
 
 private:
     std::size_t index(std::uint32_t a, std::uint32_t b) const noexcept {
@@ -36,6 +38,7 @@ private:
     std::vector<char> m_defined;
     std::vector<std::uint32_t> m_formOf;
     std::vector<ContactLaw> m_formRep;
+    bool m_hasRolling = false;
 };
 
 }  // namespace granulab::dem

@@ -26,6 +26,7 @@ namespace {
 struct OldHistory {
     std::uint64_t key;
     Real xi;
+    Real zeta;
     bool operator<(const OldHistory& o) const noexcept { return key < o.key; }
 };
 
@@ -34,19 +35,24 @@ std::vector<OldHistory> collectHistory(const ContactList& list, const std::vecto
                                        bool bothAreSlots) {
     std::vector<OldHistory> out;
     for (std::size_t k = 0; k < list.size(); ++k) {
-        if (list.xi[k] == 0) continue;
-        std::uint32_t a = list.first[k], b = list.second[k];
         const Real xi = list.xi[k];
+        Real zeta = list.zeta.empty() ? 0.0 : list.zeta[k];
+        if (xi == 0 && zeta == 0) continue;
+        std::uint32_t a = list.first[k], b = list.second[k];
         if (!oldToNew.empty()) {
             a = oldToNew[a];
             if (bothAreSlots) {
                 b = oldToNew[b];
                 // Exchanging the bodies flips n and t and the relative velocity, so v_t and the
                 // tangential spring xi are unchanged (forces.cpp: v_t = (v_i - v_j + ...) . t).
-                if (a > b) std::swap(a, b);
+                // The rolling velocity (omega_i - omega_j, R_j - R_i) does flip sign.
+                if (a > b) {
+                    std::swap(a, b);
+                    zeta = -zeta;
+                }
             }
         }
-        out.push_back({pairKey(a, b), xi});
+        out.push_back({pairKey(a, b), xi, zeta});
     }
     std::sort(out.begin(), out.end());
     return out;
@@ -70,13 +76,19 @@ void fillList(ContactList& list, const std::vector<std::uint64_t>& keys, const s
     list.second.resize(keys.size());
     list.xi.assign(keys.size(), 0.0);
     if (!list.xiTrial.empty() || trialHistory) list.xiTrial.assign(keys.size(), 0.0);
+    const bool rolling = laws.hasRolling();
+    list.zeta.assign(rolling ? keys.size() : 0, 0.0);
+    list.zetaTrial.assign(rolling && trialHistory ? keys.size() : 0, 0.0);
     std::vector<std::uint32_t> fill(list.bucketStart.begin(), list.bucketStart.end() - 1);
     for (std::size_t k = 0; k < keys.size(); ++k) {
         const std::uint32_t pos = fill[formOfKey[k]]++;
         list.first[pos] = keyFirst(keys[k]);
         list.second[pos] = keySecond(keys[k]);
-        auto it = std::lower_bound(old.begin(), old.end(), OldHistory{keys[k], 0});
-        if (it != old.end() && it->key == keys[k]) list.xi[pos] = it->xi;
+        auto it = std::lower_bound(old.begin(), old.end(), OldHistory{keys[k], 0, 0});
+        if (it != old.end() && it->key == keys[k]) {
+            list.xi[pos] = it->xi;
+            if (rolling) list.zeta[pos] = it->zeta;
+        }
     }
 }
 

@@ -19,14 +19,19 @@ struct ContactList {
     std::vector<std::uint32_t> first, second;  ///< slots (pairs) or slot + segment (walls)
     std::vector<Real> xi;                      ///< [m] tangential spring, along t = perp(n) (accepted)
     std::vector<Real> xiTrial;                 ///< [m] trial springs of an iterating integrator
+    std::vector<Real> zeta, zetaTrial;         ///< [m] rolling displacement (only with rolling laws)
     std::vector<std::uint32_t> bucketStart;    ///< formCount + 1 offsets
 
     /// Accepts the trial springs of the step (iterating integrators only).
-    void commitHistory() noexcept { xi.swap(xiTrial); }
+    void commitHistory() noexcept {
+        xi.swap(xiTrial);
+        zeta.swap(zetaTrial);
+    }
 
     std::size_t size() const noexcept { return first.size(); }
     std::size_t memoryBytes() const noexcept {
-        return first.capacity() * 4 + second.capacity() * 4 + (xi.capacity() + xiTrial.capacity()) * sizeof(Real) +
+        return first.capacity() * 4 + second.capacity() * 4 +
+               (xi.capacity() + xiTrial.capacity() + zeta.capacity() + zetaTrial.capacity()) * sizeof(Real) +
                bucketStart.capacity() * 4;
     }
 };

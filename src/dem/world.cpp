@@ -148,12 +148,14 @@ void writeList(std::ostream& os, const ContactList& l) {
     writeVector(os, l.first);
     writeVector(os, l.second);
     writeVector(os, l.xi);
+    writeVector(os, l.zeta);
     writeVector(os, l.bucketStart);
 }
 void readList(std::istream& is, ContactList& l) {
     readVector(is, l.first);
     readVector(is, l.second);
     readVector(is, l.xi);
+    readVector(is, l.zeta);
     readVector(is, l.bucketStart);
 }
 }  // namespace
@@ -195,8 +197,10 @@ void World::loadState(std::istream& is) {
     m_forceEvaluations = readPod<std::uint64_t>(is);
     m_integrator->load(is, s.size());
     if (!m_integrator->singleEvaluation()) {
-        m_list.pairs.xiTrial.assign(m_list.pairs.size(), 0.0);
-        m_list.wallPairs.xiTrial.assign(m_list.wallPairs.size(), 0.0);
+        for (auto* l : {&m_list.pairs, &m_list.wallPairs}) {
+            l->xiTrial.assign(l->size(), 0.0);
+            l->zetaTrial.assign(l->zeta.size(), 0.0);
+        }
     }
     m_walls.setTime(time());
     m_minRadius = s.size() ? *std::min_element(s.radius.begin(), s.radius.end()) : 0;

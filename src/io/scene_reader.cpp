@@ -298,10 +298,12 @@ void readContact(TableReader& r, model::ContactDef& c) {
     r.string("normal", c.normal);
     r.string("damping", c.damping);
     r.string("tangential", c.tangential);
+    r.string("rolling", c.rolling);
     // Every other key is a law parameter, checked against the law registry by validate().
     for (auto&& [k, v] : r.table()) {
         const std::string key(k.str());
-        if (key == "materials" || key == "normal" || key == "damping" || key == "tangential") continue;
+        if (key == "materials" || key == "normal" || key == "damping" || key == "tangential" || key == "rolling")
+            continue;
         r.node(key);
         model::LawParamDef p;
         p.loc = locOf(v, r.file());

@@ -71,6 +71,7 @@ struct ContactDef {
     std::string normal = "hooke";
     std::string damping = "none";
     std::string tangential = "none";
+    std::string rolling = "none";
     std::map<std::string, LawParamDef> params;  ///< law parameters by key (kn, e, mu, ...)
     SourceLoc loc;
 };

@@ -8,10 +8,10 @@ using namespace granulab;
 using namespace granulab::dem;
 
 TEST(ContactKernel, CoulombCapHolds) {
-    ResolvedLaw<HookeNormal, NoDamping, CundallStrack> law{{1e5}, {}, {2e4, 0, 0, 0.5}, false};
-    Real xi = 0;
+    ResolvedLaw<HookeNormal, NoDamping, CundallStrack> law{{1e5}, {}, {2e4, 0, 0, 0.5}, false, {}};
+    Real xi = 0, zeta = 0;
     for (int k = 0; k < 1000; ++k) {
-        const ContactForce f = evaluateContact(law, {1e-3, 0, 1.0, 1.0, 1e-4, 0.5}, xi);
+        const ContactForce f = evaluateContact(law, {1e-3, 0, 1.0, 1.0, 1e-4, 0.5, 0, 0}, xi, zeta);
         EXPECT_LE(std::abs(f.ft), 0.5 * std::abs(f.fn) * (1 + 1e-12));
     }
     // After sliding, the spring holds exactly the capped force.
@@ -30,8 +30,8 @@ TEST(ContactKernel, RestitutionMappingIsMonotone) {
 }
 
 TEST(ContactKernel, ClipAttractionNeverPulls) {
-    ResolvedLaw<HookeNormal, ViscousDamping, NoFriction> law{{1e5}, {100}, {}, true};
-    Real xi = 0;
-    const ContactForce f = evaluateContact(law, {1e-6, -10.0, 0, 1.0, 0, 0.5}, xi);
+    ResolvedLaw<HookeNormal, ViscousDamping, NoFriction> law{{1e5}, {100}, {}, true, {}};
+    Real xi = 0, zeta = 0;
+    const ContactForce f = evaluateContact(law, {1e-6, -10.0, 0, 1.0, 0, 0.5, 0, 0}, xi, zeta);
     EXPECT_EQ(f.fn, 0.0);
 }

@@ -5,6 +5,8 @@
 #pragma once
 #include <cmath>
 
+#include <cmath>
+
 #include "dem/contact/laws.hpp"
 
 namespace granulab::dem {
@@ -13,6 +15,7 @@ namespace granulab::dem {
 struct ContactForce {
     Real fn;
     Real ft;
+    Real rollingTorque;  ///< [N m] on the first body (the second gets the opposite)
 };
 
 template <class Normal, class Damping, class Tangential>
@@ -21,25 +24,35 @@ struct ResolvedLaw {
     Damping damping;
     Tangential tangential;
     bool clipAttraction;
+    RollingSettings rolling;
 };
 
-/// Evaluates one contact; ioXi is the tangential spring history [m], updated in place.
+/// Evaluates one contact; ioXi (tangential spring [m]) and ioZeta (rolling displacement [m]) are
+/// the contact's history, updated in place.
 template <class Normal, class Damping, class Tangential>
 inline ContactForce evaluateContact(const ResolvedLaw<Normal, Damping, Tangential>& law,
-                                    const ContactKinematics& k, Real& ioXi) noexcept {
+                                    const ContactKinematics& k, Real& ioXi, Real& ioZeta) noexcept {
     const Real kn = law.normal.stiffness(k.overlap, k.reff);
     const Real cn = law.damping.coefficient(k.meff, kn);
     Real fn = law.normal.force(k.overlap, k.reff) + cn * k.vn;
     if (law.clipAttraction && fn < 0) fn = 0;
     const Real ft = law.tangential.force(k, kn, fn, ioXi);
-    return {fn, ft};
+    Real rolling = 0;
+    if (law.rolling.enabled) {  // cfddem Eq. 3.56-3.59
+        ioZeta += k.dxroll;
+        const Real cr = 2.0 * law.rolling.ratio * std::sqrt(k.meff * kn) * k.reff;
+        rolling = law.rolling.kr * ioZeta + cr * k.vroll;
+    }
+    return {fn, ft, rolling};
 }
 
 /// Elastic energy stored in one contact [J].
 template <class Normal, class Damping, class Tangential>
 inline Real contactEnergy(const ResolvedLaw<Normal, Damping, Tangential>& law, Real overlap, Real reff,
-                          Real xi) noexcept {
-    return law.normal.energy(overlap, reff) + law.tangential.energy(overlap, reff, xi);
+                          Real xi, Real zeta) noexcept {
+    // Rolling spring: M = k_r Xi with relative rotation Xi / R_eff, so E = k_r Xi^2 / (2 R_eff).
+    const Real rolling = law.rolling.enabled ? 0.5 * law.rolling.kr * zeta * zeta / reff : 0.0;
+    return law.normal.energy(overlap, reff) + law.tangential.energy(overlap, reff, xi) + rolling;
 }
 
 }  // namespace granulab::dem

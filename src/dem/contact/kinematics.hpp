@@ -13,6 +13,8 @@ struct ContactKinematics {
     Real meff;     ///< [kg] effective mass
     Real dxt;      ///< [m] tangential displacement of the contact points during this step
     Real reff;     ///< [m] effective radius (R_i R_j / (R_i + R_j); the disk radius at a wall)
+    Real vroll;    ///< [m/s] rolling velocity along t (cfddem Eq. 3.58), for rolling damping
+    Real dxroll;   ///< [m] rolling displacement during this step (drift velocities)
 };
 
 }  // namespace granulab::dem

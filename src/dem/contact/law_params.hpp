@@ -11,7 +11,7 @@
 
 namespace granulab::dem {
 
-enum class LawAxis { Normal, Damping, Tangential };
+enum class LawAxis { Normal, Damping, Tangential, Rolling };
 
 inline constexpr Real kUnbounded = 1e300;
 

@@ -254,11 +254,60 @@ struct MindlinTangential {
 
 using TangentialLaw = std::variant<NoFriction, CundallStrack, MindlinTangential>;
 
+// ---------------------------------------------------------------- rolling resistance
+// Evaluated with a runtime switch inside the kernel (not a compile-time form), so that adding
+// rolling resistance does not multiply the kernels.
+
+/// No rolling resistance.
+struct NoRolling {
+    static constexpr LawAxis kAxis = LawAxis::Rolling;
+    static constexpr const char* kKeyword = "none";
+    static constexpr const char* kDoc = "no rolling resistance";
+    static std::vector<LawParamSpec> params() { return {}; }
+    static NoRolling make(const LawParams&) { return {}; }
+};
+
+/// Rolling spring-dashpot of the cfddem seed (Eq. 3.56-3.59, after Cundall-Strack and Marshall
+/// 2009): rolling velocity v_roll = -R_eff (omega_i - omega_j) - 1/2 (R_j - R_i)/(R_j + R_i) v_t
+/// (at a wall: -R omega - 1/2 v_t), rolling displacement Xi = integral of v_roll, torque on i
+/// M = k_r Xi + c_r v_roll opposing the relative rotation, on j -M. The seed gives no formula for
+/// k_r (a user parameter here) and c_r = 2 D_r sqrt(meff k_n(delta)) R_eff by analogy with c_t.
+struct SpringDashpotRolling {
+    static constexpr LawAxis kAxis = LawAxis::Rolling;
+    static constexpr const char* kKeyword = "spring_dashpot";
+    static constexpr const char* kDoc =
+        "rolling spring k_r [N] on the rolling displacement and damper c_r = 2 D_r sqrt(meff k_n) R_eff (Uphoff Eq. 3.56-3.59)";
+    static std::vector<LawParamSpec> params() {
+        return {lawParam("k_r", "N", 0, kUnbounded, false, "0", "rolling stiffness (torque per rolling displacement)"),
+                lawParam("D_r", "-", 0, kUnbounded, false, "0", "rolling damping ratio")};
+    }
+    static SpringDashpotRolling make(const LawParams& p) { return {p.getOr("k_r", 0.0), p.getOr("D_r", 0.0)}; }
+
+    Real kr = 0;     ///< [N]
+    Real ratio = 0;  ///< D_r
+};
+
+using RollingLaw = std::variant<NoRolling, SpringDashpotRolling>;
+
+/// Rolling parameters as the kernel uses them (enabled = some resistance).
+struct RollingSettings {
+    bool enabled = false;
+    Real kr = 0;
+    Real ratio = 0;
+};
+
+inline RollingSettings rollingSettings(const RollingLaw& law) noexcept {
+    if (const auto* r = std::get_if<SpringDashpotRolling>(&law))
+        return {r->kr > 0 || r->ratio > 0, r->kr, r->ratio};
+    return {};
+}
+
 /// One resolved contact law for a pair of materials.
 struct ContactLaw {
     NormalLaw normal;
     DampingLaw damping;
     TangentialLaw tangential;
+    RollingLaw rolling;
     bool clipAttraction = false;  ///< clip the normal force at zero (never attractive)
 };
 

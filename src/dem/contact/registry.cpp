@@ -60,6 +60,7 @@ const std::vector<LawEntry>& lawRegistry() {
         appendEntries<NormalLaw>(t);
         appendEntries<DampingLaw>(t);
         appendEntries<TangentialLaw>(t);
+        appendEntries<RollingLaw>(t);
         return t;
     }();
     return table;
@@ -82,17 +83,18 @@ const char* axisKey(LawAxis axis) noexcept {
         case LawAxis::Normal: return "normal";
         case LawAxis::Damping: return "damping";
         case LawAxis::Tangential: return "tangential";
+        case LawAxis::Rolling: return "rolling";
     }
     return "";
 }
 
 ContactLaw buildContactLaw(const model::ContactDef& def, const std::string& ctx, Diagnostics& diags,
                            const PairMaterials& materials) {
-    const std::string* names[3] = {&def.normal, &def.damping, &def.tangential};
-    const LawAxis axes[3] = {LawAxis::Normal, LawAxis::Damping, LawAxis::Tangential};
+    const std::string* names[4] = {&def.normal, &def.damping, &def.tangential, &def.rolling};
+    const LawAxis axes[4] = {LawAxis::Normal, LawAxis::Damping, LawAxis::Tangential, LawAxis::Rolling};
     std::vector<const LawParamSpec*> allowed;
     bool allKnown = true;
-    for (int a = 0; a < 3; ++a) {
+    for (int a = 0; a < 4; ++a) {
         const LawEntry* entry = findEntry(axes[a], *names[a]);
         if (!entry) {
             allKnown = false;
@@ -118,8 +120,8 @@ ContactLaw buildContactLaw(const model::ContactDef& def, const std::string& ctx,
         if (!spec) {
             if (allKnown)
                 diags.error(value.loc, ctx + "." + key,
-                            fmt::format("key not used by laws {}/{}/{}{}; allowed here: {}", def.normal, def.damping,
-                                        def.tangential, didYouMean(key, allowedNames), joinList(allowedNames)));
+                            fmt::format("key not used by laws {}/{}/{}/{}{}; allowed here: {}", def.normal, def.damping,
+                                        def.tangential, def.rolling, didYouMean(key, allowedNames), joinList(allowedNames)));
             continue;
         }
         if (spec->isBool != value.isBool) {
@@ -135,10 +137,11 @@ ContactLaw buildContactLaw(const model::ContactDef& def, const std::string& ctx,
     }
 
     ContactLaw law;
-    const LawParams params(values, {def.normal, def.damping, def.tangential}, materials);
+    const LawParams params(values, {def.normal, def.damping, def.tangential, def.rolling}, materials);
     makeByKeyword(def.normal, params, law.normal);
     makeByKeyword(def.damping, params, law.damping);
     makeByKeyword(def.tangential, params, law.tangential);
+    makeByKeyword(def.rolling, params, law.rolling);
     law.clipAttraction = params.getOr("clip_attraction", 0.0) != 0.0;
     for (const auto& key : params.missing())
         for (const auto* p : allowed)
