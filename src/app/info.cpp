@@ -3,8 +3,10 @@
 #include "app/info.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <fmt/format.h>
 
+#include "dem/contact/hertz_restitution.hpp"
 #include "dem/contact/registry.hpp"
 #include "dem/setup.hpp"
 #include "io/validate.hpp"
@@ -63,6 +65,20 @@ int infoCommand(const std::string& scenePath, const std::vector<io::Override>& o
 }
 
 std::string helpText(const std::string& topic) {
+    if (topic == "restitution") {  // the e <-> D helper of spec/cfddem.md section 3.5
+        std::string s =
+            "Restitution coefficient e versus damping ratio D (damping = \"lehr\", D_n = D):\n"
+            "  linear spring: e = exp(-pi D / sqrt(1 - D^2)) (Eq. 3.78, exact without clipping)\n"
+            "  Hertz spring:  e(D) of the Hertz-Lehr collision, computed (depends on D only)\n\n"
+            "     D    e linear   e Hertz   e Hertz clipped\n";
+        for (const Real d : {0.0, 0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0}) {
+            const Real lin = d < 1 ? std::exp(-kPi * d / std::sqrt(1 - d * d)) : 0.0;
+            s += fmt::format("  {:4.2f}   {:8.4f}  {:8.4f}  {:8.4f}\n", d, lin, dem::hertzRestitution(d),
+                             dem::hertzRestitution(d, true));
+        }
+        s += "\ndamping = \"restitution\" with e = ... uses the inverse of the matching column.\n";
+        return s;
+    }
     if (topic == "laws") {
         std::string s = "Contact laws ([[contact]] keys normal, damping, tangential and their parameters):\n";
         for (const auto& e : dem::lawRegistry()) {
@@ -86,8 +102,8 @@ usage:
       particles, materials, contact time, advised time step, memory estimate
   granulab render DIR --png [--width PIXELS]
       one PNG per snapshot of a finished or running simulation, into DIR/png/
-  granulab help [laws]
-      this text, or the table of contact laws and their parameters
+  granulab help [laws | restitution]
+      this text, the table of contact laws and their parameters, or the e <-> D table
   granulab --version
 
 exit status: 0 success, 2 bad input (scene errors are listed with file:line),

@@ -45,7 +45,7 @@ int main(int argc, char** argv) {
 
     std::string helpTopic;
     auto* help = cli.add_subcommand("help", "usage, or `help laws` for the contact-law table");
-    help->add_option("topic", helpTopic, "laws");
+    help->add_option("topic", helpTopic, "laws | restitution");
 
     try {
         cli.parse(argc, argv);
@@ -68,8 +68,8 @@ int main(int argc, char** argv) {
             }
             return app::renderCommand(renderDir, width, renderQuiet);
         }
-        if (*help && !helpTopic.empty() && helpTopic != "laws") {
-            fmt::print(stderr, "granulab help: unknown topic '{}'; topics: laws\n", helpTopic);
+        if (*help && !helpTopic.empty() && helpTopic != "laws" && helpTopic != "restitution") {
+            fmt::print(stderr, "granulab help: unknown topic '{}'; topics: laws, restitution\n", helpTopic);
             return app::kExitBadInput;
         }
         fmt::print("{}", app::helpText(*help ? helpTopic : ""));

@@ -117,6 +117,11 @@ TEST(Cli, InfoHelpVersion) {
     r = test::runGranulab("help laws", dir);
     EXPECT_EQ(r.status, 0);
     EXPECT_NE(r.output.find("cundall_strack"), std::string::npos);
+    r = test::runGranulab("help restitution", dir);
+    EXPECT_EQ(r.status, 0);
+    EXPECT_NE(r.output.find("0.30     0.3723    0.4168    0.4849"), std::string::npos) << r.output;  // spec table
+    r = test::runGranulab("help nonsense", dir);
+    EXPECT_EQ(r.status, 2);
     r = test::runGranulab("--version", dir);
     EXPECT_EQ(r.status, 0);
     EXPECT_NE(r.output.find("granulab 0."), std::string::npos);
