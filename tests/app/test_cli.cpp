@@ -149,3 +149,16 @@ checkpoint_interval = 0.0001
     EXPECT_TRUE(std::filesystem::exists(dir / "out/checkpoint.bin"));
     EXPECT_NE(test::readText(dir / "out/summary.json").find("\"status\": \"unstable\""), std::string::npos);
 }
+
+TEST(Cli, EveryBundledExampleValidates) {
+    const test::ScratchDir scratch;
+    int seen = 0;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(std::string(GRANULAB_SOURCE_DIR) + "/examples")) {
+        if (entry.path().extension() != ".toml") continue;
+        ++seen;
+        const auto r = test::runGranulab("info '" + entry.path().string() + "'", scratch.path);
+        EXPECT_EQ(r.status, 0) << entry.path() << "\n" << r.output;
+        EXPECT_EQ(r.output.find("warning"), std::string::npos) << entry.path() << "\n" << r.output;
+    }
+    EXPECT_GE(seen, 4);
+}

@@ -52,7 +52,8 @@ inline Real contactEnergy(const ResolvedLaw<Normal, Damping, Tangential>& law, R
                           Real xi, Real zeta) noexcept {
     // Rolling spring: M = k_r Xi with relative rotation Xi / R_eff, so E = k_r Xi^2 / (2 R_eff).
     const Real rolling = law.rolling.enabled ? 0.5 * law.rolling.kr * zeta * zeta / reff : 0.0;
-    return law.normal.energy(overlap, reff) + law.tangential.energy(overlap, reff, xi) + rolling;
+    return law.normal.energy(overlap, reff) + law.tangential.energy(overlap, reff, xi, law.normal.force(overlap, reff)) +
+           rolling;
 }
 
 }  // namespace granulab::dem

@@ -7,6 +7,7 @@
 // it to the variant of its axis. The registry (registry.cpp), validation, `granulab help laws`
 // and the force kernels pick it up from the variant.
 #pragma once
+#include <algorithm>
 #include <cmath>
 #include <variant>
 #include <vector>
@@ -149,8 +150,15 @@ struct NoFriction {
     static NoFriction make(const LawParams&) { return {}; }
 
     Real force(const ContactKinematics&, Real /*kn*/, Real /*fn*/, Real& /*ioXi*/) const noexcept { return 0; }
-    Real energy(Real, Real, Real) const noexcept { return 0; }
+    Real energy(Real, Real, Real, Real) const noexcept { return 0; }
 };
+
+/// Energy F^2 / (2 k) of a tangential spring whose force k |xi| is capped at `cap` [J].
+inline Real springEnergy(Real k, Real xi, Real cap) noexcept {
+    if (!(k > 0)) return 0;
+    const Real f = std::min(k * std::abs(xi), cap);
+    return 0.5 * f * f / k;
+}
 
 /// Coulomb cap shared by the tangential springs: |F_t| <= mu |F_n|. When the trial force exceeds
 /// the cap, the force is scaled onto it and, if `resetSpring`, the spring xi is reset so that
@@ -199,7 +207,10 @@ struct CundallStrack {
         ioXi += k.dxt;
         return coulombCap(-(kt * ioXi + c * k.vt), fn, mu, kt, c, k.vt, true, ioXi);
     }
-    Real energy(Real, Real, Real xi) const noexcept { return 0.5 * kt * xi * xi; }
+    /// Stored energy F_t^2 / (2 kt) of the spring force, at most the Coulomb cap [J].
+    Real energy(Real, Real, Real xi, Real normalForce) const noexcept {
+        return springEnergy(kt, xi, mu * std::abs(normalForce));
+    }
 };
 
 /// Mindlin tangential spring of the cfddem seed (Eq. 3.47-3.54): k_t = 8 G* sqrt(R_eff delta) with
@@ -249,7 +260,11 @@ struct MindlinTangential {
         ioXi += k.dxt;
         return coulombCap(-(kt * ioXi + ct * k.vt), fn, mu, kt, ct, k.vt, resetSpring, ioXi);
     }
-    Real energy(Real overlap, Real reff, Real xi) const noexcept { return 0.5 * stiffness(overlap, reff) * xi * xi; }
+    /// Stored energy of the spring force, at most the Coulomb cap [J]: in the seed's faithful
+    /// mode the spring keeps growing while the force is capped, and only the capped part is real.
+    Real energy(Real overlap, Real reff, Real xi, Real normalForce) const noexcept {
+        return springEnergy(stiffness(overlap, reff), xi, mu * std::abs(normalForce));
+    }
 };
 
 using TangentialLaw = std::variant<NoFriction, CundallStrack, MindlinTangential>;
