@@ -5,6 +5,7 @@
 // Pairs are processed in list order, so the floating-point summation order is fixed.
 #include "dem/forces.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <type_traits>
 
@@ -55,7 +56,7 @@ inline Real tangentialIncrement(const DriftVelocities& d, std::uint32_t i, std::
     return (-vrx * ny + vry * nx) * dt;
 }
 
-template <class N, class D, class T>
+template <class N, class D, class T, bool kRolling>
 void diskPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, std::uint32_t end,
                const LawTable& laws, const DriftVelocities& drift, Real dt, Real overlapGuard, bool trialHistory,
                ForceStats& stats) noexcept {
@@ -74,11 +75,11 @@ void diskPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
     Real* __restrict tq = s.torque.data();
     const std::uint32_t* __restrict pi = list.first.data();
     const std::uint32_t* __restrict pj = list.second.data();
-    const Real* xiIn = list.xi.data();
-    Real* xiOut = trialHistory ? list.xiTrial.data() : list.xi.data();
-    const bool rolling = laws.hasRolling();
-    const Real* zetaIn = list.zeta.data();
-    Real* zetaOut = trialHistory ? list.zetaTrial.data() : list.zeta.data();
+    // History is read and written through one pointer: the accepted springs, or (iterating
+    // integrators) the trial copy that computeForces refreshed from them.
+    Real* __restrict xiHist = trialHistory ? list.xiTrial.data() : list.xi.data();
+    constexpr bool rolling = kRolling;  // some law has rolling resistance (a compile-time switch)
+    Real* __restrict zetaHist = trialHistory ? list.zetaTrial.data() : list.zeta.data();
     std::uint64_t contacts = 0;
     Real maxRel = stats.maxRelativeOverlap;
     for (std::uint32_t p = begin; p < end; ++p) {
@@ -88,8 +89,8 @@ void diskPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
         const Real rsum = ri + rj;
         const Real r2 = dx * dx + dy * dy;
         if (r2 >= rsum * rsum) {
-            xiOut[p] = 0;
-            if (rolling) zetaOut[p] = 0;
+            xiHist[p] = 0;
+            if (rolling) zetaHist[p] = 0;
             continue;
         }
         ++contacts;
@@ -98,9 +99,7 @@ void diskPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
         const Real nx = r > 0 ? dx * invR : 1.0, ny = r > 0 ? dy * invR : 0.0;
         const Real overlap = rsum - r;
         if (overlapGuard > 0 && overlap > overlapGuard * (ri < rj ? ri : rj)) {  // seed's guard, off by default
-            ++stats.guardSkips;
-            xiOut[p] = xiIn[p];
-            if (rolling) zetaOut[p] = zetaIn[p];
+            ++stats.guardSkips;  // history kept as it is
             continue;
         }
         // Relative velocity of i's contact point w.r.t. j's: v_i - v_j + (w_i r_i + w_j r_j) perp(n).
@@ -113,7 +112,9 @@ void diskPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
         k.vn = vrx * nx + vry * ny;
         k.vt = -vrx * ny + vry * nx;
         k.meff = mi * mj / (mi + mj);
-        k.reff = ri * rj / rsum;
+        // R_eff costs a division: only for laws that use it (Hertz, Mindlin, rolling).
+        constexpr bool kLawUsesReff = std::is_same_v<N, HertzNormal> || std::is_same_v<T, MindlinTangential>;
+        k.reff = (kLawUsesReff || rolling) ? ri * rj / rsum : 0.0;
         k.dxt = 0;
         if (!std::is_same_v<T, NoFriction> || rolling)
             if (drift.vx) k.dxt = tangentialIncrement(drift, i, j, ri, rj, nx, ny, dt);
@@ -124,14 +125,12 @@ void diskPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
             const Real sizeTerm = 0.5 * (rj - ri) / rsum;
             k.vroll = -k.reff * (om[i] - om[j]) - sizeTerm * k.vt;
             if (drift.vx) k.dxroll = -k.reff * (drift.omega[i] - drift.omega[j]) * dt - sizeTerm * k.dxt;
-            zeta = zetaIn[p];
+            zeta = zetaHist[p];
         }
         const auto law = resolve<N, D, T>(table[static_cast<std::size_t>(mat[i]) * nm + mat[j]]);
-        Real xi = xiIn[p];
-        const ContactForce f = evaluateContact(law, k, xi, zeta);
-        xiOut[p] = xi;
-        if (rolling) {
-            zetaOut[p] = zeta;
+        const ContactForce f = evaluateContact<N, D, T, kRolling>(law, k, xiHist[p], zeta);
+        if constexpr (kRolling) {
+            zetaHist[p] = zeta;
             tq[i] += f.rollingTorque;
             tq[j] -= f.rollingTorque;
         }
@@ -166,12 +165,12 @@ void diskWalls(model::ParticleStore& s, const model::WallSet& walls, ContactList
         const Real r = s.radius[i];
         const auto g = geom::diskSegmentContact(c, r, seg.a, seg.b, seg.startShared, seg.endShared,
                                                 seg.prevDirection);
-        Real* xiOut = trialHistory ? list.xiTrial.data() : list.xi.data();
+        Real* xiHist = trialHistory ? list.xiTrial.data() : list.xi.data();
         const bool rolling = laws.hasRolling();
-        Real* zetaOut = trialHistory ? list.zetaTrial.data() : list.zeta.data();
+        Real* zetaHist = trialHistory ? list.zetaTrial.data() : list.zeta.data();
         if (!g.touching || g.overlap <= 0) {
-            xiOut[p] = 0;
-            if (rolling) zetaOut[p] = 0;
+            xiHist[p] = 0;
+            if (rolling) zetaHist[p] = 0;
             continue;
         }
         ++contacts;
@@ -200,14 +199,12 @@ void diskWalls(model::ParticleStore& s, const model::WallSet& walls, ContactList
         if (rolling) {  // Eq. 3.58 with R_wall -> infinity, in the pair frame of the disk
             k.vroll = -r * s.omega[i] + 0.5 * k.vt;
             if (drift.vx) k.dxroll = -r * drift.omega[i] * dt + 0.5 * k.dxt;
-            zeta = list.zeta[p];
+            zeta = zetaHist[p];
         }
         const auto law = resolve<N, D, T>(table[static_cast<std::size_t>(s.material[i]) * nm + seg.material]);
-        Real xi = list.xi[p];
-        const ContactForce f = evaluateContact(law, k, xi, zeta);
-        xiOut[p] = xi;
+        const ContactForce f = evaluateContact(law, k, xiHist[p], zeta);
         if (rolling) {
-            zetaOut[p] = zeta;
+            zetaHist[p] = zeta;
             s.torque[i] += f.rollingTorque;
         }
         const Real fxi = f.fn * n.x - f.ft * n.y;
@@ -234,11 +231,20 @@ void computeForces(model::ParticleStore& s, const model::WallSet& walls, Neighbo
     }
     stats = ForceStats{};
     for (auto& w : wallForce) w = Vec2{};
+    if (trialHistory) {  // every evaluation of a step starts from the accepted history
+        for (auto* l : {&list.pairs, &list.wallPairs}) {
+            std::copy(l->xi.begin(), l->xi.end(), l->xiTrial.begin());
+            std::copy(l->zeta.begin(), l->zeta.end(), l->zetaTrial.begin());
+        }
+    }
     forEachBucket(list.pairs, laws, [&](auto* nT, auto* dT, auto* tT, std::uint32_t b, std::uint32_t e) {
         using N = std::remove_pointer_t<decltype(nT)>;
         using D = std::remove_pointer_t<decltype(dT)>;
         using T = std::remove_pointer_t<decltype(tT)>;
-        diskPairs<N, D, T>(s, list.pairs, b, e, laws, drift, dt, body.overlapGuard, trialHistory, stats);
+        if (laws.hasRolling())
+            diskPairs<N, D, T, true>(s, list.pairs, b, e, laws, drift, dt, body.overlapGuard, trialHistory, stats);
+        else
+            diskPairs<N, D, T, false>(s, list.pairs, b, e, laws, drift, dt, body.overlapGuard, trialHistory, stats);
     });
     forEachBucket(list.wallPairs, laws, [&](auto* nT, auto* dT, auto* tT, std::uint32_t b, std::uint32_t e) {
         using N = std::remove_pointer_t<decltype(nT)>;

@@ -29,7 +29,8 @@ struct ResolvedLaw {
 
 /// Evaluates one contact; ioXi (tangential spring [m]) and ioZeta (rolling displacement [m]) are
 /// the contact's history, updated in place.
-template <class Normal, class Damping, class Tangential>
+/// kRolling = false compiles the rolling-resistance branch out (no rolling law in the scene).
+template <class Normal, class Damping, class Tangential, bool kRolling = true>
 inline ContactForce evaluateContact(const ResolvedLaw<Normal, Damping, Tangential>& law,
                                     const ContactKinematics& k, Real& ioXi, Real& ioZeta) noexcept {
     const Real kn = law.normal.stiffness(k.overlap, k.reff);
@@ -38,7 +39,7 @@ inline ContactForce evaluateContact(const ResolvedLaw<Normal, Damping, Tangentia
     if (law.clipAttraction && fn < 0) fn = 0;
     const Real ft = law.tangential.force(k, kn, fn, ioXi);
     Real rolling = 0;
-    if (law.rolling.enabled) {  // cfddem Eq. 3.56-3.59
+    if (kRolling && law.rolling.enabled) {  // cfddem Eq. 3.56-3.59
         ioZeta += k.dxroll;
         const Real cr = 2.0 * law.rolling.ratio * std::sqrt(k.meff * kn) * k.reff;
         rolling = law.rolling.kr * ioZeta + cr * k.vroll;
