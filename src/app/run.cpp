@@ -225,8 +225,10 @@ int runCommand(const RunOptions& opt) {
 
     const bool ok = status == dem::kStepOk;
     std::vector<std::string> warnings = valid.warnings;
-    if (guardSkips > 0)
+    if (guardSkips > 0) {
         warnings.push_back(fmt::format("overlap guard skipped {} particle-pair contact evaluations", guardSkips));
+        if (!opt.quiet) fmt::print(stderr, "warning: {}\n", warnings.back());
+    }
     if (ok) io::writeFinalCsv(dir + "/final.csv", world.store(), dem::materialNames(scene));
 
     const std::int64_t steps = world.stepIndex() - loopStartStep;

@@ -99,7 +99,9 @@ void diskPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
         const Real nx = r > 0 ? dx * invR : 1.0, ny = r > 0 ? dy * invR : 0.0;
         const Real overlap = rsum - r;
         if (overlapGuard > 0 && overlap > overlapGuard * (ri < rj ? ri : rj)) {  // seed's guard, off by default
-            ++stats.guardSkips;  // history kept as it is
+            ++stats.guardSkips;  // history kept as it is; the overlap still counts for the diagnosis
+            const Real rel = overlap / (ri < rj ? ri : rj);
+            maxRel = rel > maxRel ? rel : maxRel;
             continue;
         }
         // Relative velocity of i's contact point w.r.t. j's: v_i - v_j + (w_i r_i + w_j r_j) perp(n).

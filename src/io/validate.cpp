@@ -228,8 +228,8 @@ ValidatedScene validate(const model::SceneDef& scene) {
     for (std::size_t m = 0; m < nm; ++m) {
         if (usedByParticles[m] && !(scene.materials[m].density > 0))
             diags.error(scene.materials[m].loc, fmt::format("material[{}].density", m),
-                        fmt::format("material '{}' is used by particles and needs density > 0 [kg/m^2], got {}", names[m],
-                                    scene.materials[m].density));
+                        fmt::format("material '{}' is used by particles and needs density > 0 [{}], got {}", names[m],
+                                    massModel == model::MassModel::Sphere ? "kg/m^3" : "kg/m^2", scene.materials[m].density));
         for (std::size_t o = 0; o < nm; ++o) {
             // Particle pairs are unordered (report m <= o once); particle-wall pairs are ordered.
             const bool occurs = usedByParticles[m] && ((usedByParticles[o] && o >= m) || usedByWalls[o]);
@@ -243,7 +243,10 @@ ValidatedScene validate(const model::SceneDef& scene) {
 
     // Characteristic impact speed for nonlinear contacts: the fastest start velocity or a free
     // fall over the height of the packing, at least 1 cm/s.
-    for (const auto& w : scene.walls) speed = std::max(speed, norm(w.velocity));
+    for (const auto& w : scene.walls) {
+        speed = std::max(speed, norm(w.velocity));
+        for (const auto& q : w.points) ylo = std::min(ylo, q.y);  // fall height down to the walls
+    }
     if (!out.initial.particles.empty()) speed = std::max(speed, std::sqrt(2 * norm(scene.dem.gravity) * (yhi - ylo)));
     speed = std::max(speed, 0.01);
     out.advice = dem::adviseTimeStep(laws, names, minMass, minRadius, usedByWalls, speed);

@@ -78,6 +78,9 @@ public:
         return false;
     }
     const std::vector<std::string>& missing() const noexcept { return m_missing; }
+    /// A law reports a value it cannot realise (key, message).
+    void fail(std::string key, std::string message) const { m_failures.push_back({std::move(key), std::move(message)}); }
+    const std::vector<std::pair<std::string, std::string>>& failures() const noexcept { return m_failures; }
 
 private:
     std::map<std::string, Real> m_values;
@@ -85,6 +88,7 @@ private:
     PairMaterials m_materials;
     mutable std::vector<std::string> m_missing;
     mutable std::vector<std::string> m_missingMaterial;
+    mutable std::vector<std::pair<std::string, std::string>> m_failures;
 };
 
 /// Shorthand used by the law tables.

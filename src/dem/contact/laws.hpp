@@ -100,7 +100,14 @@ struct RestitutionDamping {
         const Real e = p.require("e");
         const bool clip = p.getOr("clip_attraction", 0.0) != 0.0;
         // Hooke: Eq. 3.78 (exact, unclipped). Hertz: e(D) of the Hertz-Lehr collision, inverted.
-        return {p.uses(HertzNormal::kKeyword) ? hertzDampingRatio(e, clip) : linearDampingRatio(e)};
+        if (!p.uses(HertzNormal::kKeyword)) return {linearDampingRatio(e)};
+        const Real d = hertzDampingRatio(e, clip);
+        const Real reached = hertzRestitution(d, clip);
+        if (reached > e + 1e-3)
+            p.fail("e", "e = " + std::to_string(e) + " is below the smallest restitution this Hertz law reaches (" +
+                            std::to_string(reached) + (clip ? ", clipped" : "") + "); allowed [" + std::to_string(reached) +
+                            ", 1]");
+        return {d};
     }
 
     Real beta = 0;  ///< damping ratio derived from e

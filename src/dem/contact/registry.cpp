@@ -149,6 +149,7 @@ ContactLaw buildContactLaw(const model::ContactDef& def, const std::string& ctx,
                 diags.error(def.loc, ctx + "." + key,
                             fmt::format("missing required parameter '{}' ({}), allowed {} [{}]", key, p->doc,
                                         p->rangeText(), p->unit));
+    for (const auto& [key, message] : params.failures()) diags.error(def.loc, ctx + "." + key, message);
     std::vector<std::string> seen;
     for (const auto& name : params.materialsMissingModulus()) {
         if (std::find(seen.begin(), seen.end(), name) != seen.end()) continue;
