@@ -28,6 +28,20 @@ std::size_t StateColumns::bytes() const noexcept {
 }
 
 namespace {
+/// The three degrees of freedom of a 2D particle (x, y, phi) as parallel column pointers:
+/// position, velocity, generalised force and inverse inertia of each.
+struct Dofs {
+    Real* pos[3];
+    Real* vel[3];
+    const Real* force[3];
+    const Real* inv[3];
+    explicit Dofs(model::ParticleStore& s) noexcept
+        : pos{s.x.data(), s.y.data(), s.angle.data()},
+          vel{s.vx.data(), s.vy.data(), s.omega.data()},
+          force{s.fx.data(), s.fy.data(), s.torque.data()},
+          inv{s.invMass.data(), s.invMass.data(), s.invInertia.data()} {}
+};
+
 /// Largest |v| of the store; NaN propagates so that the caller sees a blow-up.
 Real maxSpeed(const model::ParticleStore& s) noexcept {
     Real maxV2 = 0;
@@ -119,10 +133,11 @@ Real PredictorCorrector::predict(model::ParticleStore& s, Real dt) noexcept {
     Real* ap[3] = {m_state[0], m_state[1], m_state[2]};
     Real* vn[3] = {m_state[3], m_state[4], m_state[5]};
     Real* drift[3] = {m_state[6], m_state[7], m_state[8]};
-    Real* pos[3] = {s.x.data(), s.y.data(), s.angle.data()};
-    Real* vel[3] = {s.vx.data(), s.vy.data(), s.omega.data()};
-    const Real* force[3] = {s.fx.data(), s.fy.data(), s.torque.data()};
-    const Real* inv[3] = {s.invMass.data(), s.invMass.data(), s.invInertia.data()};
+    const Dofs dof(s);
+    Real* const* pos = dof.pos;
+    Real* const* vel = dof.vel;
+    const Real* const* force = dof.force;
+    const Real* const* inv = dof.inv;
     for (int d = 0; d < 3; ++d)
         for (std::size_t i = 0; i < n; ++i) {
             const Real a = force[d][i] * inv[d][i];  // acceleration accepted at t (Eq. 3.16-3.19)
@@ -141,10 +156,11 @@ bool PredictorCorrector::correct(model::ParticleStore& s, Real dt, int iteration
     Real* ap[3] = {m_state[0], m_state[1], m_state[2]};
     Real* vn[3] = {m_state[3], m_state[4], m_state[5]};
     Real* drift[3] = {m_state[6], m_state[7], m_state[8]};
-    Real* pos[3] = {s.x.data(), s.y.data(), s.angle.data()};
-    Real* vel[3] = {s.vx.data(), s.vy.data(), s.omega.data()};
-    const Real* force[3] = {s.fx.data(), s.fy.data(), s.torque.data()};
-    const Real* inv[3] = {s.invMass.data(), s.invMass.data(), s.invInertia.data()};
+    const Dofs dof(s);
+    Real* const* pos = dof.pos;
+    Real* const* vel = dof.vel;
+    const Real* const* force = dof.force;
+    const Real* const* inv = dof.inv;
     Real worst = 0;  // Eq. 3.24: the largest |a^c - a^p| over all particles and components
     for (int d = 0; d < 3; ++d)
         for (std::size_t i = 0; i < n; ++i) {
@@ -169,10 +185,11 @@ bool PredictorCorrector::correct(model::ParticleStore& s, Real dt, int iteration
 Real GearPredictorCorrector::predict(model::ParticleStore& s, Real dt) noexcept {
     const std::size_t n = s.size();
     m_state.resize(n);
-    Real* pos[3] = {s.x.data(), s.y.data(), s.angle.data()};
-    Real* vel[3] = {s.vx.data(), s.vy.data(), s.omega.data()};
-    const Real* force[3] = {s.fx.data(), s.fy.data(), s.torque.data()};
-    const Real* inv[3] = {s.invMass.data(), s.invMass.data(), s.invInertia.data()};
+    const Dofs dof(s);
+    Real* const* pos = dof.pos;
+    Real* const* vel = dof.vel;
+    const Real* const* force = dof.force;
+    const Real* const* inv = dof.inv;
     for (int d = 0; d < 3; ++d) {
         Real* r2 = m_state[4 * d];
         Real* r3 = m_state[4 * d + 1];
@@ -202,10 +219,11 @@ Real GearPredictorCorrector::predict(model::ParticleStore& s, Real dt) noexcept 
 bool GearPredictorCorrector::correct(model::ParticleStore& s, Real dt, int) noexcept {
     constexpr Real c1 = 251.0 / 360.0, c3 = 11.0 / 18.0, c4 = 1.0 / 6.0, c5 = 1.0 / 60.0;  // Table F.1, p = 2
     const std::size_t n = s.size();
-    Real* pos[3] = {s.x.data(), s.y.data(), s.angle.data()};
-    Real* vel[3] = {s.vx.data(), s.vy.data(), s.omega.data()};
-    const Real* force[3] = {s.fx.data(), s.fy.data(), s.torque.data()};
-    const Real* inv[3] = {s.invMass.data(), s.invMass.data(), s.invInertia.data()};
+    const Dofs dof(s);
+    Real* const* pos = dof.pos;
+    Real* const* vel = dof.vel;
+    const Real* const* force = dof.force;
+    const Real* const* inv = dof.inv;
     for (int d = 0; d < 3; ++d) {
         Real* r2 = m_state[4 * d];
         Real* r3 = m_state[4 * d + 1];
