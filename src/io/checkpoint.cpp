@@ -13,7 +13,7 @@ namespace granulab::io {
 
 namespace {
 constexpr std::uint64_t kMagic = 0x544b434c42414e47ULL;  // "GNABLCKT"
-constexpr std::uint32_t kVersion = 1;
+constexpr std::uint32_t kVersion = 2;  // 2: rolling history, force-evaluation count, integrator state
 }  // namespace
 
 void writeCheckpoint(const std::string& dir, const CheckpointHeader& header, const OutputCounters& counters,
