@@ -103,7 +103,8 @@ private:
     dem::Energies m_lastEnergy;
 };
 
-std::string describeStatus(std::uint32_t status, const dem::World& world, const std::string& lastCheckpoint) {
+std::string describeStatus(std::uint32_t status, const dem::World& world, const std::string& lastCheckpoint,
+                           std::uint64_t guardSkips) {
     std::vector<std::string> why;
     if (status & dem::kStepNonFinite) why.push_back("a particle position or velocity became NaN/infinite");
     if (status & dem::kStepTunnelling)
@@ -114,7 +115,10 @@ std::string describeStatus(std::uint32_t status, const dem::World& world, const 
     std::string s = fmt::format("the run became unstable at t = {:.6g} s (step {}): ", world.time(), world.stepIndex());
     for (std::size_t k = 0; k < why.size(); ++k) s += (k ? "; " : "") + why[k];
     s += ". Likely causes: ";
-    if (status & dem::kStepDeepOverlap)
+    if ((status & dem::kStepDeepOverlap) && guardSkips > 0)
+        s += "the overlap guard (dem.overlap_guard) skipped contacts deeper than 1 % of the radius, so particles "
+             "interpenetrated; switch the guard off or raise the stiffness";
+    else if (status & dem::kStepDeepOverlap)
         s += "contact stiffness too low for the impact speeds (overlap ~ v sqrt(meff/kn)); raise kn or lower the speeds";
     else
         s += "time step too large for the contact stiffness (see `granulab info` for the advised dt), "
@@ -135,7 +139,8 @@ int runCommand(const RunOptions& opt) {
     fs::create_directories(dir);
     dem::World world = dem::makeWorld(scene, valid.initial);
     valid.initial = {};  // the world holds the particles now; free the generated copy
-    const io::CheckpointHeader header{scene.dem.dt, world.store().size(), world.walls().segments.size()};
+    const io::CheckpointHeader header{scene.dem.dt, world.store().size(), world.walls().segments.size(),
+                                      scene.dem.integrator};
     io::OutputCounters counters;
     const bool resumed = !opt.resumeDir.empty();
     if (resumed) {
@@ -227,7 +232,7 @@ int runCommand(const RunOptions& opt) {
     std::vector<std::string> warnings = valid.warnings;
     if (guardSkips > 0) {
         warnings.push_back(fmt::format("overlap guard skipped {} particle-pair contact evaluations", guardSkips));
-        if (!opt.quiet) fmt::print(stderr, "warning: {}\n", warnings.back());
+        fmt::print(stderr, "warning: {}\n", warnings.back());  // warnings are shown even with --quiet
     }
     if (ok) io::writeFinalCsv(dir + "/final.csv", world.store(), dem::materialNames(scene));
 
@@ -239,7 +244,7 @@ int runCommand(const RunOptions& opt) {
     js["version"] = kVersion;
     js["scene"] = opt.scene;
     js["status"] = ok ? "completed" : "unstable";
-    if (!ok) js["diagnosis"] = describeStatus(status, world, lastCheckpoint);
+    if (!ok) js["diagnosis"] = describeStatus(status, world, lastCheckpoint, guardSkips);
     js["resumed_from_step"] = resumed ? loopStartStep : 0;
     js["particles"] = world.store().size();
     js["wall_segments"] = world.walls().segments.size();
@@ -291,7 +296,7 @@ int runCommand(const RunOptions& opt) {
     io::writeFileAtomically(dir + "/summary.json", js.dump(2) + "\n");
 
     if (!ok) {
-        fmt::print(stderr, "error: {}\n", describeStatus(status, world, lastCheckpoint));
+        fmt::print(stderr, "error: {}\n", describeStatus(status, world, lastCheckpoint, guardSkips));
         return kExitUnstable;
     }
     if (!opt.quiet) {

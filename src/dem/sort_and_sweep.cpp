@@ -45,7 +45,10 @@ void SortAndSweep::sortAxis(int axis) {
     for (std::size_t k = 1; k < list.size(); ++k) {
         const Endpoint moving = list[k];
         std::size_t j = k;
-        while (j > 0 && list[j - 1].value > moving.value) {
+        // At equal values an end sorts before a begin, so the list order always says "strict
+        // overlap" exactly when the values do (touching boxes do not overlap).
+        while (j > 0 && (list[j - 1].value > moving.value ||
+                         (list[j - 1].value == moving.value && !list[j - 1].isEnd && moving.isEnd))) {
             const Endpoint& left = list[j - 1];
             if (left.box != moving.box) {
                 if (!left.isEnd && moving.isEnd) {

@@ -13,7 +13,7 @@ namespace granulab::io {
 
 namespace {
 constexpr std::uint64_t kMagic = 0x544b434c42414e47ULL;  // "GNABLCKT"
-constexpr std::uint32_t kVersion = 2;  // 2: rolling history, force-evaluation count, integrator state
+constexpr std::uint32_t kVersion = 3;  // 3: + integrator name
 }  // namespace
 
 void writeCheckpoint(const std::string& dir, const CheckpointHeader& header, const OutputCounters& counters,
@@ -28,6 +28,7 @@ void writeCheckpoint(const std::string& dir, const CheckpointHeader& header, con
         writePod(out, header.dt);
         writePod(out, header.particles);
         writePod(out, header.walls);
+        writeString(out, header.integrator);
         writePod(out, counters.nextSnapshot);
         world.saveState(out);
         if (!out) throw std::runtime_error("write failed: " + tmp);
@@ -46,6 +47,10 @@ OutputCounters readCheckpoint(const std::string& dir, const CheckpointHeader& ex
     h.dt = readPod<double>(in);
     h.particles = readPod<std::uint64_t>(in);
     h.walls = readPod<std::uint64_t>(in);
+    h.integrator = readString(in);
+    if (h.integrator != expected.integrator)
+        throw std::runtime_error(fmt::format("{} was written with integrator '{}'; resume with --set dem.integrator={}",
+                                             path, h.integrator, h.integrator));
     if (h.dt != expected.dt || h.particles != expected.particles || h.walls != expected.walls)
         throw std::runtime_error(fmt::format(
             "{} belongs to another scene (dt {} s, {} particles, {} walls; this scene: dt {} s, {} particles, {} walls)",

@@ -19,6 +19,7 @@ struct CheckpointHeader {
     double dt = 0;
     std::uint64_t particles = 0;
     std::uint64_t walls = 0;
+    std::string integrator;  ///< its state is part of the checkpoint
 };
 
 /// Writes `dir`/checkpoint.bin atomically (temporary file + rename).

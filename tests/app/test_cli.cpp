@@ -101,6 +101,9 @@ TEST(Cli, ResumeContinuesBitForBitAndRunsAreDeterministic) {
     run("--out again");
     run("--out split --set run.end_time=0.0137");
     run("--resume split");
+    const auto other = test::runGranulab("run '" + scene + "'" + common + " --resume full --set dem.integrator=gear", dir);
+    EXPECT_EQ(other.status, 2) << other.output;  // a checkpoint holds the state of its own integrator
+    EXPECT_NE(other.output.find("integrator 'verlet'"), std::string::npos) << other.output;
     const std::string full = test::readText(dir / "full/final.csv");
     ASSERT_GT(full.size(), 1000u);
     EXPECT_EQ(full, test::readText(dir / "again/final.csv"));  // deterministic

@@ -73,3 +73,26 @@ TEST(BroadPhase, SortAndSweepMatchesBruteForceWhileParticlesMoveAndArrive) {
     }
     EXPECT_GT(ref.size(), 100u);
 }
+
+TEST(BroadPhase, SortAndSweepHandlesExactlyTouchingBoxes) {
+    // Square lattice whose boxes touch exactly (spacing = 2 r + margin): ties in both lists.
+    model::ParticleStore s;
+    const Real r = 0.5, margin = 0.25, a = 2 * r + margin;
+    for (int iy = 0; iy < 12; ++iy)
+        for (int ix = 0; ix < 12; ++ix)
+            s.add(static_cast<ParticleId>(s.size()), {ix * a, iy * a}, {}, 0, 0, r, 1, 1, 0);
+    dem::SortAndSweep sap;
+    dem::BruteForce brute;
+    CounterRng rng(5, 2);
+    std::vector<std::uint64_t> ref, got;
+    for (int round = 0; round < 40; ++round) {
+        sap.findPairs(s, margin, got);
+        brute.findPairs(s, margin, ref);
+        ASSERT_EQ(ref, got) << "round " << round;
+        // Nudge a few particles along one axis only, by amounts that keep some ties exact.
+        for (int k = 0; k < 10; ++k) {
+            const auto i = static_cast<std::size_t>(rng.uniform(0, static_cast<Real>(s.size())));
+            (round % 2 ? s.x : s.y)[i] += (rng.uniform() < 0.5 ? -1 : 1) * 0.0625;
+        }
+    }
+}

@@ -5,7 +5,6 @@
 #pragma once
 #include <cmath>
 
-#include <cmath>
 
 #include "dem/contact/laws.hpp"
 

@@ -9,6 +9,7 @@
 #pragma once
 #include <algorithm>
 #include <cmath>
+#include <fmt/format.h>
 #include <variant>
 #include <vector>
 
@@ -104,9 +105,9 @@ struct RestitutionDamping {
         const Real d = hertzDampingRatio(e, clip);
         const Real reached = hertzRestitution(d, clip);
         if (reached > e + 1e-3)
-            p.fail("e", "e = " + std::to_string(e) + " is below the smallest restitution this Hertz law reaches (" +
-                            std::to_string(reached) + (clip ? ", clipped" : "") + "); allowed [" + std::to_string(reached) +
-                            ", 1]");
+            p.fail("e", fmt::format("e = {:.4g} is below the smallest restitution this Hertz law reaches ({:.4g}{}); "
+                                    "allowed [{:.4g}, 1]",
+                                    e, reached, clip ? ", clipped" : "", reached));
         return {d};
     }
 
@@ -277,8 +278,9 @@ struct MindlinTangential {
 using TangentialLaw = std::variant<NoFriction, CundallStrack, MindlinTangential>;
 
 // ---------------------------------------------------------------- rolling resistance
-// Evaluated with a runtime switch inside the kernel (not a compile-time form), so that adding
-// rolling resistance does not multiply the kernels.
+// Not part of the compile-time form of a law: the pair loop is compiled with and without rolling
+// (dem/forces.cpp), and each material pair switches it on at run time, so rolling resistance does
+// not multiply the kernels by the number of rolling laws.
 
 /// No rolling resistance.
 struct NoRolling {
