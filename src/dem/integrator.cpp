@@ -134,18 +134,14 @@ Real PredictorCorrector::predict(model::ParticleStore& s, Real dt) noexcept {
     Real* vn[3] = {m_state[3], m_state[4], m_state[5]};
     Real* drift[3] = {m_state[6], m_state[7], m_state[8]};
     const Dofs dof(s);
-    Real* const* pos = dof.pos;
-    Real* const* vel = dof.vel;
-    const Real* const* force = dof.force;
-    const Real* const* inv = dof.inv;
     for (int d = 0; d < 3; ++d)
         for (std::size_t i = 0; i < n; ++i) {
-            const Real a = force[d][i] * inv[d][i];  // acceleration accepted at t (Eq. 3.16-3.19)
+            const Real a = dof.force[d][i] * dof.inv[d][i];  // acceleration accepted at t (Eq. 3.16-3.19)
             ap[d][i] = a;
-            vn[d][i] = vel[d][i];
-            pos[d][i] += vel[d][i] * dt + 0.5 * a * dt * dt;
-            vel[d][i] += a * dt;
-            drift[d][i] = m_maxIterations == 0 ? vel[d][i] : 0.5 * (vn[d][i] + vel[d][i]);
+            vn[d][i] = dof.vel[d][i];
+            dof.pos[d][i] += dof.vel[d][i] * dt + 0.5 * a * dt * dt;
+            dof.vel[d][i] += a * dt;
+            drift[d][i] = m_maxIterations == 0 ? dof.vel[d][i] : 0.5 * (vn[d][i] + dof.vel[d][i]);
         }
     return maxSpeed(s);
 }
@@ -157,25 +153,21 @@ bool PredictorCorrector::correct(model::ParticleStore& s, Real dt, int iteration
     Real* vn[3] = {m_state[3], m_state[4], m_state[5]};
     Real* drift[3] = {m_state[6], m_state[7], m_state[8]};
     const Dofs dof(s);
-    Real* const* pos = dof.pos;
-    Real* const* vel = dof.vel;
-    const Real* const* force = dof.force;
-    const Real* const* inv = dof.inv;
     Real worst = 0;  // Eq. 3.24: the largest |a^c - a^p| over all particles and components
     for (int d = 0; d < 3; ++d)
         for (std::size_t i = 0; i < n; ++i) {
-            const Real delta = std::abs(force[d][i] * inv[d][i] - ap[d][i]);
+            const Real delta = std::abs(dof.force[d][i] * dof.inv[d][i] - ap[d][i]);
             worst = (delta > worst || delta != delta) ? delta : worst;
         }
     if (worst <= m_tolerance || iteration >= m_maxIterations || worst != worst) return true;
     const Real c = m_corrector;
     for (int d = 0; d < 3; ++d)
         for (std::size_t i = 0; i < n; ++i) {
-            const Real da = force[d][i] * inv[d][i] - ap[d][i];
-            pos[d][i] += 0.25 * c * da * dt * dt;  // Eq. 3.25
-            vel[d][i] += 0.5 * c * da * dt;         // Eq. 3.26
+            const Real da = dof.force[d][i] * dof.inv[d][i] - ap[d][i];
+            dof.pos[d][i] += 0.25 * c * da * dt * dt;  // Eq. 3.25
+            dof.vel[d][i] += 0.5 * c * da * dt;         // Eq. 3.26
             ap[d][i] += c * da;                     // Eq. 3.27
-            drift[d][i] = 0.5 * (vn[d][i] + vel[d][i]);
+            drift[d][i] = 0.5 * (vn[d][i] + dof.vel[d][i]);
         }
     return false;
 }
@@ -186,26 +178,19 @@ Real GearPredictorCorrector::predict(model::ParticleStore& s, Real dt) noexcept 
     const std::size_t n = s.size();
     m_state.resize(n);
     const Dofs dof(s);
-    Real* const* pos = dof.pos;
-    Real* const* vel = dof.vel;
-    const Real* const* force = dof.force;
-    const Real* const* inv = dof.inv;
     for (int d = 0; d < 3; ++d) {
-        Real* r2 = m_state[4 * d];
-        Real* r3 = m_state[4 * d + 1];
-        Real* r4 = m_state[4 * d + 2];
-        Real* r5 = m_state[4 * d + 3];
+        auto [r2, r3, r4, r5] = higherDerivatives(d);
         Real* drift = m_state[12 + d];
         for (std::size_t i = 0; i < n; ++i) {
             if (!m_started) {  // start from the forces at t = 0, higher derivatives zero
-                r2[i] = 0.5 * dt * dt * force[d][i] * inv[d][i];
+                r2[i] = 0.5 * dt * dt * dof.force[d][i] * dof.inv[d][i];
                 r3[i] = r4[i] = r5[i] = 0;
             }
-            const Real r1 = vel[d][i] * dt;
+            const Real r1 = dof.vel[d][i] * dt;
             // Pascal-matrix predictor (Eq. F.11), each row using the old higher values.
             const Real dr0 = r1 + r2[i] + r3[i] + r4[i] + r5[i];
-            pos[d][i] += dr0;
-            vel[d][i] = (r1 + 2 * r2[i] + 3 * r3[i] + 4 * r4[i] + 5 * r5[i]) / dt;
+            dof.pos[d][i] += dr0;
+            dof.vel[d][i] = (r1 + 2 * r2[i] + 3 * r3[i] + 4 * r4[i] + 5 * r5[i]) / dt;
             r2[i] += 3 * r3[i] + 6 * r4[i] + 10 * r5[i];
             r3[i] += 4 * r4[i] + 10 * r5[i];
             r4[i] += 5 * r5[i];
@@ -220,19 +205,12 @@ bool GearPredictorCorrector::correct(model::ParticleStore& s, Real dt, int) noex
     constexpr Real c1 = 251.0 / 360.0, c3 = 11.0 / 18.0, c4 = 1.0 / 6.0, c5 = 1.0 / 60.0;  // Table F.1, p = 2
     const std::size_t n = s.size();
     const Dofs dof(s);
-    Real* const* pos = dof.pos;
-    Real* const* vel = dof.vel;
-    const Real* const* force = dof.force;
-    const Real* const* inv = dof.inv;
     for (int d = 0; d < 3; ++d) {
-        Real* r2 = m_state[4 * d];
-        Real* r3 = m_state[4 * d + 1];
-        Real* r4 = m_state[4 * d + 2];
-        Real* r5 = m_state[4 * d + 3];
+        auto [r2, r3, r4, r5] = higherDerivatives(d);
         for (std::size_t i = 0; i < n; ++i) {
-            const Real delta = 0.5 * dt * dt * force[d][i] * inv[d][i] - r2[i];  // Eq. F.13
-            pos[d][i] += m_c0 * delta;
-            vel[d][i] += c1 * delta / dt;
+            const Real delta = 0.5 * dt * dt * dof.force[d][i] * dof.inv[d][i] - r2[i];  // Eq. F.13
+            dof.pos[d][i] += m_c0 * delta;
+            dof.vel[d][i] += c1 * delta / dt;
             r2[i] += delta;
             r3[i] += c3 * delta;
             r4[i] += c4 * delta;

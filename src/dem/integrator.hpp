@@ -4,6 +4,7 @@
 // seed's predictor-corrector iteration (spec/cfddem.md section 2; modified Euler with 0
 // iterations) and the 6-value Gear predictor-corrector of gc2d (spec/gc2d.md section 4).
 #pragma once
+#include <array>
 #include <cstdint>
 #include <iosfwd>
 #include <memory>
@@ -146,6 +147,10 @@ public:
     void load(std::istream& is, std::size_t particles) override;
 
 private:
+    /// Scaled derivatives r2..r5 of degree of freedom d (0 x, 1 y, 2 phi).
+    std::array<Real*, 4> higherDerivatives(int d) noexcept {
+        return {m_state[4 * d], m_state[4 * d + 1], m_state[4 * d + 2], m_state[4 * d + 3]};
+    }
     Real m_c0;
     bool m_started = false;  ///< r2..r5 initialised from the first forces
     /// r2..r5 for x, y, phi (columns 4 d + k, d = 0..2, k = 0..3, scaled [m] or [rad]), then the
