@@ -23,7 +23,8 @@ int infoCommand(const std::string& scenePath, const std::vector<io::Override>& o
     if (!scene.run.title.empty()) fmt::print("title        {}\n", scene.run.title);
     fmt::print("engine       {} ({}D), integrator {}, broad phase {}\n", scene.run.engine, scene.run.dimension,
                scene.dem.integrator, scene.dem.broadPhase);
-    fmt::print("particles    {} disks\n", ps.size());
+    const char* kind = scene.dem.massModel == "sphere" ? "spheres (moving in the plane)" : "disks";
+    fmt::print("particles    {} {}\n", ps.size(), kind);
     for (std::size_t m = 0; m < names.size(); ++m) {
         std::size_t count = 0;
         Real rmin = 1e300, rmax = 0, mass = 0;
@@ -35,7 +36,7 @@ int infoCommand(const std::string& scenePath, const std::vector<io::Override>& o
                 mass += model::particleMass(model::massModelOf(scene.dem.massModel), scene.materials[m].density, p.radius);
             }
         if (count)
-            fmt::print("  material {:<12} {:>9} disks, radius {:.4g}..{:.4g} m, density {:.4g} kg/m^{}, total mass {:.4g} kg\n",
+            fmt::print("  material {:<12} {:>9} particles, radius {:.4g}..{:.4g} m, density {:.4g} kg/m^{}, total mass {:.4g} kg\n",
                        names[m], count, rmin, rmax, scene.materials[m].density, scene.dem.massModel == "sphere" ? 3 : 2,
                        mass);
         else
@@ -46,8 +47,8 @@ int infoCommand(const std::string& scenePath, const std::vector<io::Override>& o
     fmt::print("walls        {} ({} segments)\n", scene.walls.size(), segments);
     fmt::print("contact laws {}\n", scene.contacts.size());
     for (const auto& c : scene.contacts)
-        fmt::print("  {}/{}: normal {}, damping {}, tangential {}\n", c.materialA, c.materialB, c.normal, c.damping,
-                   c.tangential);
+        fmt::print("  {}/{}: normal {}, damping {}, tangential {}, rolling {}\n", c.materialA, c.materialB, c.normal,
+                   c.damping, c.tangential, c.rolling);
     fmt::print("time step    dt = {:.4g} s, end time {:.6g} s, {} steps\n", scene.dem.dt, scene.run.endTime,
                static_cast<long long>(scene.run.endTime / scene.dem.dt + 0.5));
     fmt::print("contact time {:.4g} s ({}, impact at {:.3g} m/s for nonlinear laws), {:.1f} steps per contact\n",
