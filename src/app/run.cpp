@@ -80,18 +80,11 @@ public:
 
     void snapshot(const dem::World& world, io::OutputCounters& counters) {
         if (!m_vtk) return;
-        const std::string name = fmt::format("{:06}", counters.nextSnapshot++);
-        fs::create_directories(m_dir + "/vtk");
-        io::writeParticlesVtp(m_dir + "/vtk/particles_" + name + ".vtp", world.store(), world.time());
-        io::writeWallsVtp(m_dir + "/vtk/walls_" + name + ".vtp", world.walls(), world.time());
-        m_pvd.add(world.time(), 0, "vtk/particles_" + name + ".vtp");
-        m_pvd.add(world.time(), 1, "vtk/walls_" + name + ".vtp");
-        m_pvd.write();
+        io::writeSnapshot(m_dir, static_cast<int>(counters.nextSnapshot++), world.store(), world.walls(), world.time(),
+                          m_pvd);
         m_series.flush();
-        m_lastSnapshotStep = world.stepIndex();
     }
 
-    std::int64_t lastSnapshotStep() const { return m_lastSnapshotStep; }
     const dem::Energies& lastEnergy() const { return m_lastEnergy; }
 
 private:
@@ -99,7 +92,6 @@ private:
     bool m_vtk;
     io::PvdWriter m_pvd;
     io::SeriesWriter m_series;
-    std::int64_t m_lastSnapshotStep = -1;
     dem::Energies m_lastEnergy;
 };
 

@@ -88,10 +88,10 @@ std::uint32_t World::step() {
     }
     if (!std::isfinite(maxSpeed)) status |= kStepNonFinite;
     // A particle, or a wall sweeping through particles, moving half a radius in one step tunnels.
-    if ((maxSpeed + m_walls.maxDisplacement(0, 1)) * dt > 0.5 * m_minRadius) status |= kStepTunnelling;
+    if ((maxSpeed + m_walls.maxSpeed()) * dt > 0.5 * m_minRadius) status |= kStepTunnelling;
     {  // 2+3+5 neighbour check, broad phase and history transfer when needed
         ScopedStage t(m_timers, Stage::Neighbors);
-        const Real wallTravel = m_walls.maxDisplacement(m_list.wallTime0, time());
+        const Real wallTravel = m_walls.maxSpeed() * (time() - m_list.wallTime0);
         if (m_list.needsRebuild(m_store, m_config.skin, wallTravel)) rebuildNeighbors();
     }
     // 4+6+7: force evaluation(s) at the trial state and correction, until the integrator accepts.

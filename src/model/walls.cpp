@@ -48,16 +48,10 @@ void WallSet::setTime(Real t) noexcept {
     }
 }
 
-Real WallSet::maxDisplacement(Real t0, Real t1) const noexcept {
+Real WallSet::maxSpeed() const noexcept {
     Real m = 0;
-    for (const auto& w : walls) m = std::max(m, norm(w.velocity) * std::abs(t1 - t0));
+    for (const auto& w : walls) m = std::max(m, norm(w.velocity));
     return m;
-}
-
-bool WallSet::anyMoving() const noexcept {
-    for (const auto& w : walls)
-        if (w.velocity.x != 0 || w.velocity.y != 0) return true;
-    return false;
 }
 
 }  // namespace granulab::model

@@ -36,9 +36,8 @@ struct WallSet {
                      std::uint32_t material, Vec2 velocity);
     /// Places every wall at its prescribed position for time t [s] (x = x0 + v t, no drift).
     void setTime(Real t) noexcept;
-    /// Largest distance [m] any segment moves between times t0 and t1.
-    Real maxDisplacement(Real t0, Real t1) const noexcept;
-    bool anyMoving() const noexcept;
+    /// Largest speed [m/s] of any wall.
+    Real maxSpeed() const noexcept;
 };
 
 }  // namespace granulab::model
