@@ -1,0 +1,375 @@
+// SPDX-License-Identifier: MIT
+// Tracked convex polygon contact: crossings, the local overlap chain, 2D Lin-Canny, cold start
+// (gc2d spec sections 3.1 and 5.3).
+#include "geom/convex_contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "geom/polygon.hpp"
+
+namespace granulab::geom {
+
+namespace {
+
+/// > 0: p lies left of the directed line e0 -> e1 (inside for a counter-clockwise edge).
+inline Real side(Vec2 p, Vec2 e0, Vec2 e1) noexcept { return cross(e1 - e0, p - e0); }
+
+inline int wrap(int k, int n) noexcept { return ((k % n) + n) % n; }
+
+/// A crossing where X's boundary enters Y: X-edge x (X[x] outside Y-edge y's line, X[x+1] inside
+/// or on it) crosses Y-edge y (Y[y] inside or on X-edge x's line, Y[y+1] outside). For a convex
+/// pair with two boundary crossings exactly one (x, y) qualifies.
+struct Entry {
+    Vec2 point;
+    Real tx = 0;  ///< parameter of the point along X-edge x
+    Real ty = 0;  ///< parameter along Y-edge y
+};
+
+inline bool entryAt(const PolygonFrame& X, const PolygonFrame& Y, int x, int y, Entry& e) noexcept {
+    const Vec2 x0 = X.corner(x), x1 = X.corner(x + 1);
+    const Vec2 y0 = Y.corner(y), y1 = Y.corner(y + 1);
+    const Real sx0 = side(x0, y0, y1);
+    if (!(sx0 < 0)) return false;
+    const Real sx1 = side(x1, y0, y1);
+    if (!(sx1 >= 0)) return false;
+    const Real sy1 = side(y1, x0, x1);
+    if (!(sy1 < 0)) return false;
+    const Real sy0 = side(y0, x0, x1);
+    if (!(sy0 >= 0)) return false;
+    e.tx = sx0 / (sx0 - sx1);
+    e.ty = sy0 / (sy0 - sy1);
+    e.point = x0 + (x1 - x0) * e.tx;
+    return true;
+}
+
+/// Index offsets tried around a cached crossing: single-edge moves first (the usual case as a
+/// contact rolls or slides), then both edges, then two edges away.
+constexpr int kOffsets[][2] = {{1, 0},  {-1, 0}, {0, 1},  {0, -1}, {1, 1},   {-1, -1}, {1, -1}, {-1, 1},
+                               {2, 0},  {-2, 0}, {0, 2},  {0, -2}, {2, 1},   {1, 2},   {-2, -1}, {-1, -2},
+                               {2, -1}, {-1, 2}, {-2, 1}, {1, -2}, {2, 2},   {-2, -2}, {2, -2}, {-2, 2}};
+
+/// Searches the entry at and around the cached (x, y).
+bool findEntryNear(const PolygonFrame& X, const PolygonFrame& Y, int& x, int& y, Entry& e,
+                   std::uint64_t& iterations) noexcept {
+    ++iterations;
+    if (entryAt(X, Y, x, y, e)) return true;
+    for (const auto& o : kOffsets) {
+        ++iterations;
+        const int cx = wrap(x + o[0], X.n), cy = wrap(y + o[1], Y.n);
+        if (entryAt(X, Y, cx, cy, e)) {
+            x = cx;
+            y = cy;
+            return true;
+        }
+    }
+    return false;
+}
+
+/// Overlap polygon from the two crossings: A-entry (a1, b1, e1) and B-entry (b2 into A at a2, e2).
+AreaContact chainContact(const PolygonFrame& A, const PolygonFrame& B, int a1, int b1, const Entry& e1, int a2, int b2,
+                         const Entry& e2) noexcept {
+    int kA = wrap(a2 - a1, A.n);
+    if (kA == 0 && !(e2.ty > e1.tx)) kA = A.n;  // e2.ty: parameter of the B-entry along A-edge a2
+    int kB = wrap(b1 - b2, B.n);
+    if (kB == 0 && !(e1.ty > e2.tx)) kB = B.n;
+    const Vec2 o = e1.point;  // shoelace relative to c1
+    Real area2 = 0;
+    Vec2 prev{0, 0};
+    for (int k = 1; k <= kA; ++k) {
+        const Vec2 p = A.corner(a1 + k) - o;
+        area2 += cross(prev, p);
+        prev = p;
+    }
+    {
+        const Vec2 p = e2.point - o;
+        area2 += cross(prev, p);
+        prev = p;
+    }
+    for (int k = 1; k <= kB; ++k) {
+        const Vec2 p = B.corner(b2 + k) - o;
+        area2 += cross(prev, p);
+        prev = p;
+    }
+    // closing edge back to c1 (the origin) contributes cross(prev, 0) = 0
+    AreaContact c;
+    c.area = 0.5 * area2;
+    c.c1 = e1.point;
+    c.c2 = e2.point;
+    c.point = (c.c1 + c.c2) * 0.5;
+    c.touching = c.area > 0;
+    // B's chain (A's side) lies left of c1 -> c2: n = perp(c2 - c1) pushes A away from B.
+    const Vec2 line = c.c2 - c.c1;
+    const Real len = norm(line);
+    if (len > 0) {
+        c.normal = perp(line) / len;
+    } else {
+        const Vec2 d = A.centre - B.centre;
+        const Real dn = norm(d);
+        c.normal = dn > 0 ? d / dn : Vec2{1, 0};
+    }
+    return c;
+}
+
+std::vector<Vec2> worldCorners(const PolygonFrame& p) {
+    std::vector<Vec2> out(static_cast<std::size_t>(p.n));
+    for (int k = 0; k < p.n; ++k) out[static_cast<std::size_t>(k)] = p.corner(k);
+    return out;
+}
+
+/// Full clipping (rare: deep overlaps, containment, several crossings).
+AreaContact clipContact(const PolygonFrame& A, const PolygonFrame& B) {
+    const PolygonOverlap o = convexOverlap(worldCorners(A), worldCorners(B));
+    AreaContact c;
+    c.touching = o.overlapping;
+    if (!o.overlapping) return c;
+    c.area = o.area;
+    c.c1 = o.c1;
+    c.c2 = o.c2;
+    c.point = o.point;
+    c.normal = o.normal;
+    return c;
+}
+
+/// True if the overlap found from two crossings may miss further crossings.
+inline bool deepOverlap(const AreaContact& c, const PolygonFrame& A, const PolygonFrame& B) noexcept {
+    const Real rin = std::min(A.inradius * A.scale, B.inradius * B.scale);
+    return !(c.area <= 0.25 * rin * norm(c.c2 - c.c1)) || !std::isfinite(c.area);
+}
+
+// ------------------------------------------------------------------ 2D Lin-Canny
+enum class Walk { Apart, Suspect };
+
+inline Vec2 closestOnSegment(Vec2 a, Vec2 b, Vec2 p) noexcept {
+    const Vec2 d = b - a;
+    const Real l2 = norm2(d);
+    Real t = l2 > 0 ? dot(p - a, d) / l2 : 0;
+    t = t < 0 ? 0 : (t > 1 ? 1 : t);
+    return a + d * t;
+}
+
+/// Tests q against the Voronoi region of feature f of P; moves f to the neighbour across a
+/// violated boundary. Returns 0: inside, 1: moved, 2: q lies on the inner side of the edge.
+inline int voronoiStep(const PolygonFrame& P, int& f, Vec2 q) noexcept {
+    const int k = f >> 1;
+    if ((f & 1) == 0) {  // corner k
+        const Vec2 c = P.corner(k);
+        if (dot(q - c, P.corner(k + 1) - c) > 0) {
+            f = 2 * k + 1;
+            return 1;
+        }
+        if (dot(q - c, c - P.corner(k - 1)) < 0) {
+            f = 2 * wrap(k - 1, P.n) + 1;
+            return 1;
+        }
+        return 0;
+    }
+    const Vec2 a = P.corner(k), b = P.corner(k + 1), d = b - a;
+    if (dot(q - a, d) < 0) {
+        f = 2 * k;
+        return 1;
+    }
+    if (dot(q - b, d) > 0) {
+        f = 2 * wrap(k + 1, P.n);
+        return 1;
+    }
+    return cross(d, q - a) > 0 ? 2 : 0;
+}
+
+/// Closest points of feature fa of A and fb of B; an edge-edge pair is reduced to the
+/// corner-edge pair that realises it (returns false if the two edges intersect).
+bool featurePoints(const PolygonFrame& A, const PolygonFrame& B, int& fa, int& fb, Vec2& pa, Vec2& pb) noexcept {
+    const int ka = fa >> 1, kb = fb >> 1;
+    const bool ea = fa & 1, eb = fb & 1;
+    if (!ea && !eb) {
+        pa = A.corner(ka);
+        pb = B.corner(kb);
+    } else if (!ea) {
+        pa = A.corner(ka);
+        pb = closestOnSegment(B.corner(kb), B.corner(kb + 1), pa);
+    } else if (!eb) {
+        pb = B.corner(kb);
+        pa = closestOnSegment(A.corner(ka), A.corner(ka + 1), pb);
+    } else {
+        const Vec2 a0 = A.corner(ka), a1 = A.corner(ka + 1), b0 = B.corner(kb), b1 = B.corner(kb + 1);
+        const Real s0 = side(b0, a0, a1), s1 = side(b1, a0, a1), t0 = side(a0, b0, b1), t1 = side(a1, b0, b1);
+        if (((s0 <= 0 && s1 >= 0) || (s0 >= 0 && s1 <= 0)) && ((t0 <= 0 && t1 >= 0) || (t0 >= 0 && t1 <= 0)))
+            return false;
+        // Non-intersecting segments: the distance is realised at an endpoint.
+        const Vec2 q[4] = {closestOnSegment(b0, b1, a0), closestOnSegment(b0, b1, a1), closestOnSegment(a0, a1, b0),
+                           closestOnSegment(a0, a1, b1)};
+        const Real d[4] = {norm2(q[0] - a0), norm2(q[1] - a1), norm2(q[2] - b0), norm2(q[3] - b1)};
+        const int best = static_cast<int>(std::min_element(d, d + 4) - d);
+        if (best < 2) {
+            fa = 2 * wrap(ka + best, A.n);
+            pa = best == 0 ? a0 : a1;
+            pb = q[best];
+        } else {
+            fb = 2 * wrap(kb + best - 2, B.n);
+            pb = best == 2 ? b0 : b1;
+            pa = q[best];
+        }
+    }
+    return true;
+}
+
+/// Walks (fa, fb) to the closest features. Apart: the distance is positive and the features are
+/// certified by the Voronoi regions. Suspect: the polygons may overlap (features intersect or a
+/// closest point lies on the inner side of an edge); fa, fb are then near the contact.
+Walk linCanny(const PolygonFrame& A, const PolygonFrame& B, int& fa, int& fb, std::uint64_t& iterations) noexcept {
+    const int limit = 2 * (A.n + B.n) + 8;
+    for (int it = 0; it < limit; ++it) {
+        ++iterations;
+        Vec2 pa, pb;
+        if (!featurePoints(A, B, fa, fb, pa, pb)) return Walk::Suspect;
+        const int ra = voronoiStep(A, fa, pb);
+        if (ra == 1) continue;
+        const int rb = voronoiStep(B, fb, pa);
+        if (rb == 1) continue;
+        if (ra == 2 || rb == 2) return Walk::Suspect;
+        return norm2(pa - pb) > 0 ? Walk::Apart : Walk::Suspect;
+    }
+    return Walk::Suspect;
+}
+
+/// O(n m) search of both crossings; 0: none, 1: exactly one of each, 2: several.
+int allEntries(const PolygonFrame& A, const PolygonFrame& B, int& a1, int& b1, Entry& e1, int& a2, int& b2,
+               Entry& e2) noexcept {
+    int nAB = 0, nBA = 0;
+    Entry e;
+    for (int a = 0; a < A.n; ++a)
+        for (int b = 0; b < B.n; ++b) {
+            if (entryAt(A, B, a, b, e)) {
+                if (nAB++ == 0) {
+                    a1 = a;
+                    b1 = b;
+                    e1 = e;
+                }
+            }
+            if (entryAt(B, A, b, a, e)) {
+                if (nBA++ == 0) {
+                    b2 = b;
+                    a2 = a;
+                    e2 = e;
+                }
+            }
+        }
+    if (nAB == 0 && nBA == 0) return 0;
+    return (nAB == 1 && nBA == 1) ? 1 : 2;
+}
+
+bool inside(const PolygonFrame& P, Vec2 q) noexcept {
+    for (int k = 0; k < P.n; ++k)
+        if (side(q, P.corner(k), P.corner(k + 1)) < 0) return false;
+    return true;
+}
+
+AreaContact coldStart(const PolygonFrame& A, const PolygonFrame& B, FeatureCache& cache, FeatureStats& stats) noexcept {
+    ++stats.coldStarts;
+    stats.iterations += static_cast<std::uint64_t>(A.n) * static_cast<std::uint64_t>(B.n);
+    int a1 = 0, b1 = 0, a2 = 0, b2 = 0;
+    Entry e1, e2;
+    const int found = allEntries(A, B, a1, b1, e1, a2, b2, e2);
+    if (found == 1) {
+        AreaContact c = chainContact(A, B, a1, b1, e1, a2, b2, e2);
+        if (!deepOverlap(c, A, B)) {
+            cache.state = FeatureCache::Crossing;
+            cache.f[0] = static_cast<std::uint16_t>(a1);
+            cache.f[1] = static_cast<std::uint16_t>(b1);
+            cache.f[2] = static_cast<std::uint16_t>(a2);
+            cache.f[3] = static_cast<std::uint16_t>(b2);
+            return c;
+        }
+    }
+    if (found != 0 || inside(B, A.corner(0)) || inside(A, B.corner(0))) {
+        ++stats.fullClips;
+        cache.state = FeatureCache::Cold;
+        return clipContact(A, B);
+    }
+    // Apart: start the walk from the closest pair of corners.
+    int fa = 0, fb = 0;
+    Real best = -1;
+    for (int a = 0; a < A.n; ++a)
+        for (int b = 0; b < B.n; ++b) {
+            const Real d = norm2(A.corner(a) - B.corner(b));
+            if (best < 0 || d < best) {
+                best = d;
+                fa = 2 * a;
+                fb = 2 * b;
+            }
+        }
+    if (linCanny(A, B, fa, fb, stats.iterations) == Walk::Apart) {
+        cache.state = FeatureCache::Apart;
+        cache.f[0] = static_cast<std::uint16_t>(fa);
+        cache.f[1] = static_cast<std::uint16_t>(fb);
+    } else {
+        cache.state = FeatureCache::Cold;
+    }
+    return {};
+}
+
+/// Both crossings near (a1, b1) and (a2, b2); false if either is not found locally.
+bool trackCrossings(const PolygonFrame& A, const PolygonFrame& B, int& a1, int& b1, int& a2, int& b2, AreaContact& out,
+                    FeatureStats& stats) noexcept {
+    Entry e1, e2;
+    if (!findEntryNear(A, B, a1, b1, e1, stats.iterations)) return false;
+    if (!findEntryNear(B, A, b2, a2, e2, stats.iterations)) return false;
+    out = chainContact(A, B, a1, b1, e1, a2, b2, e2);
+    return !deepOverlap(out, A, B);
+}
+
+}  // namespace
+
+AreaContact trackPolygonContact(const PolygonFrame& A, const PolygonFrame& B, FeatureCache& cache,
+                                FeatureStats& stats) noexcept {
+    ++stats.evaluations;
+    if (cache.state == FeatureCache::Crossing) {
+        int a1 = cache.f[0] % A.n, b1 = cache.f[1] % B.n, a2 = cache.f[2] % A.n, b2 = cache.f[3] % B.n;
+        AreaContact c;
+        if (trackCrossings(A, B, a1, b1, a2, b2, c, stats)) {
+            cache.f[0] = static_cast<std::uint16_t>(a1);
+            cache.f[1] = static_cast<std::uint16_t>(b1);
+            cache.f[2] = static_cast<std::uint16_t>(a2);
+            cache.f[3] = static_cast<std::uint16_t>(b2);
+            return c;
+        }
+        // Probably separated: walk from the edges of the last crossing.
+        int fa = 2 * (cache.f[0] % A.n) + 1, fb = 2 * (cache.f[1] % B.n) + 1;
+        if (linCanny(A, B, fa, fb, stats.iterations) == Walk::Apart) {
+            cache.state = FeatureCache::Apart;
+            cache.f[0] = static_cast<std::uint16_t>(fa);
+            cache.f[1] = static_cast<std::uint16_t>(fb);
+            return {};
+        }
+        return coldStart(A, B, cache, stats);
+    }
+    if (cache.state == FeatureCache::Apart) {
+        int fa = cache.f[0] % (2 * A.n), fb = cache.f[1] % (2 * B.n);
+        if (linCanny(A, B, fa, fb, stats.iterations) == Walk::Apart) {
+            cache.f[0] = static_cast<std::uint16_t>(fa);
+            cache.f[1] = static_cast<std::uint16_t>(fb);
+            return {};
+        }
+        // First touch: the crossings lie next to the closest features.
+        int a1 = fa >> 1, b1 = fb >> 1, a2 = fa >> 1, b2 = fb >> 1;
+        AreaContact c;
+        if (trackCrossings(A, B, a1, b1, a2, b2, c, stats)) {
+            cache.state = FeatureCache::Crossing;
+            cache.f[0] = static_cast<std::uint16_t>(a1);
+            cache.f[1] = static_cast<std::uint16_t>(b1);
+            cache.f[2] = static_cast<std::uint16_t>(a2);
+            cache.f[3] = static_cast<std::uint16_t>(b2);
+            return c;
+        }
+    }
+    return coldStart(A, B, cache, stats);
+}
+
+AreaContact polygonContact(const PolygonFrame& a, const PolygonFrame& b) noexcept {
+    FeatureCache cache;
+    FeatureStats stats;
+    return coldStart(a, b, cache, stats);
+}
+
+}  // namespace granulab::geom
