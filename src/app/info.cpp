@@ -22,7 +22,7 @@ int infoCommand(const std::string& scenePath, const std::vector<io::Override>& o
     fmt::print("scene        {}\n", scenePath);
     if (!scene.run.title.empty()) fmt::print("title        {}\n", scene.run.title);
     fmt::print("engine       {} ({}D), integrator {}, broad phase {}\n", scene.run.engine, scene.run.dimension,
-               scene.dem.integrator, scene.dem.broadPhase);
+               dem::integratorOf(scene), dem::broadPhaseOf(scene));
     const char* kind = scene.dem.massModel == "sphere" ? "spheres (moving in the plane)" : "disks";
     fmt::print("particles    {} {}\n", ps.size(), kind);
     for (std::size_t m = 0; m < names.size(); ++m) {

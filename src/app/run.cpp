@@ -132,7 +132,7 @@ int runCommand(const RunOptions& opt) {
     dem::World world = dem::makeWorld(scene, valid.initial);
     valid.initial = {};  // the world holds the particles now; free the generated copy
     const io::CheckpointHeader header{scene.dem.dt, world.store().size(), world.walls().segments.size(),
-                                      scene.dem.integrator};
+                                      world.integratorName()};
     io::OutputCounters counters;
     const bool resumed = !opt.resumeDir.empty();
     if (resumed) {
@@ -253,6 +253,14 @@ int runCommand(const RunOptions& opt) {
         world.stepIndex() > 0 ? static_cast<double>(world.forceEvaluations()) / static_cast<double>(world.stepIndex()) : 0.0;
     js["candidate_pairs"] = world.neighbors().pairs.size();
     js["contacts"] = world.forceStats().contacts;
+    if (world.shapes().size() > 0) {  // polygon contacts: closest-feature work (gc2d spec section 5.3)
+        const auto& fs = world.featureStats();
+        const double evals = fs.evaluations ? static_cast<double>(fs.evaluations) : 1.0;
+        js["closest_feature"] = {{"evaluations", fs.evaluations},
+                                 {"tests_per_evaluation", static_cast<double>(fs.iterations) / evals},
+                                 {"cold_start_fraction", static_cast<double>(fs.coldStarts) / evals},
+                                 {"full_clip_fraction", static_cast<double>(fs.fullClips) / evals}};
+    }
     js["wall_contacts"] = world.forceStats().wallContacts;
     js["overlap_guard_skips"] = guardSkips;
     nlohmann::json timers;

@@ -10,6 +10,7 @@
 #include <type_traits>
 
 #include "dem/contact/kernel.hpp"
+#include "dem/forces_area.hpp"
 #include "geom/segment.hpp"
 
 namespace granulab::dem {
@@ -220,72 +221,287 @@ void diskWalls(model::ParticleStore& s, const model::WallSet& walls, ContactList
     stats.wallContacts += contacts;
 }
 
+template <class D>
+constexpr bool kAreaDamping = std::is_same_v<D, NoDamping> || std::is_same_v<D, AreaDamping>;
+template <class T>
+constexpr bool kAreaTangential = std::is_same_v<T, NoFriction> || std::is_same_v<T, AreaFriction>;
+/// True for the law forms of the overlap-depth kernels (disks only).
+template <class N, class D, class T>
+constexpr bool kDepthForm = !std::is_same_v<N, AreaNormal> && !std::is_same_v<D, AreaDamping> &&
+                            !std::is_same_v<T, AreaFriction>;
+/// True for the forms of the gc2d area kernel (validation rejects mixed forms).
+template <class N, class D, class T>
+constexpr bool kAreaForm = std::is_same_v<N, AreaNormal> && kAreaDamping<D> && kAreaTangential<T>;
+
+/// Contact-point velocities of slot i for lever arm r (v + omega z x r), actual and drift.
+inline Vec2 pointVelocity(const Real* vx, const Real* vy, const Real* om, std::uint32_t i, Vec2 r) noexcept {
+    return Vec2{vx[i], vy[i]} + perp(r) * om[i];
+}
+
+/// gc2d area contacts of one bucket of particle pairs (any shapes).
+template <class D, class T>
+void areaPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, std::uint32_t end, const LawTable& laws,
+               const DriftVelocities& drift, Real dt, bool trialHistory, ForceStats& stats, ShapeContext& sc) noexcept {
+    const std::uint32_t nm = laws.materialCount();
+    const ContactLaw* table = laws.laws().data();
+    Real* xiHist = trialHistory ? list.xiTrial.data() : list.xi.data();
+    Real* areaHist = trialHistory ? list.areaOldTrial.data() : list.areaOld.data();
+    std::uint64_t contacts = 0;
+    Real maxRel = stats.maxRelativeOverlap;
+    for (std::uint32_t p = begin; p < end; ++p) {
+        const std::uint32_t i = list.first[p], j = list.second[p];
+        const Real dx = s.x[j] - s.x[i], dy = s.y[j] - s.y[i], rsum = s.radius[i] + s.radius[j];
+        if (dx * dx + dy * dy >= rsum * rsum) {  // bounding circles apart: no contact possible
+            xiHist[p] = 0;
+            areaHist[p] = 0;
+            continue;
+        }
+        area::AreaPair c;
+        c.g = area::pairGeometry(s, sc, i, j, list.features[p]);
+        if (!c.g.touching) {
+            xiHist[p] = 0;
+            areaHist[p] = 0;
+            continue;
+        }
+        ++contacts;
+        c.ri = c.g.point - Vec2{s.x[i], s.y[i]};
+        c.rj = c.g.point - Vec2{s.x[j], s.y[j]};
+        c.vi = pointVelocity(s.vx.data(), s.vy.data(), s.omega.data(), i, c.ri);
+        c.vj = pointVelocity(s.vx.data(), s.vy.data(), s.omega.data(), j, c.rj);
+        if (drift.vx) {
+            c.hasDrift = true;
+            c.di = pointVelocity(drift.vx, drift.vy, drift.omega, i, c.ri);
+            c.dj = pointVelocity(drift.vx, drift.vy, drift.omega, j, c.rj);
+        }
+        c.mi = s.mass[i];
+        c.mj = s.mass[j];
+        c.invIi = s.invInertia[i];
+        c.invIj = s.invInertia[j];
+        const ContactLaw& law = table[static_cast<std::size_t>(s.material[i]) * nm + s.material[j]];
+        const area::AreaForce f = area::areaLaw(*std::get_if<AreaNormal>(&law.normal), *std::get_if<D>(&law.damping),
+                                                *std::get_if<T>(&law.tangential), c, dt, xiHist[p], areaHist[p]);
+        s.fx[i] += f.onI.x;
+        s.fy[i] += f.onI.y;
+        s.fx[j] -= f.onI.x;
+        s.fy[j] -= f.onI.y;
+        s.torque[i] += cross(c.ri, f.onI);
+        s.torque[j] -= cross(c.rj, f.onI);
+        maxRel = std::max(maxRel, f.overlapDepth / std::min(s.radius[i], s.radius[j]));
+    }
+    stats.contacts += contacts;
+    stats.maxRelativeOverlap = maxRel;
+}
+
+/// gc2d area contacts of particles with wall segments.
+template <class D, class T>
+void areaWalls(model::ParticleStore& s, const model::WallSet& walls, ContactList& list, std::uint32_t begin,
+               std::uint32_t end, const LawTable& laws, const DriftVelocities& drift, Real dt, bool trialHistory,
+               ForceStats& stats, std::vector<Vec2>& wallForce, ShapeContext& sc) noexcept {
+    const std::uint32_t nm = laws.materialCount();
+    const ContactLaw* table = laws.laws().data();
+    Real* xiHist = trialHistory ? list.xiTrial.data() : list.xi.data();
+    Real* areaHist = trialHistory ? list.areaOldTrial.data() : list.areaOld.data();
+    std::uint64_t contacts = 0;
+    area::WallQuad quad;
+    for (std::uint32_t p = begin; p < end; ++p) {
+        const std::uint32_t i = list.first[p];
+        const auto& seg = walls.segments[list.second[p]];
+        const Vec2 xi{s.x[i], s.y[i]};
+        area::wallQuad(seg.a, seg.b, xi, 2 * s.radius[i], quad);
+        area::AreaPair c;
+        c.wall = true;
+        if (s.shape[i] != model::kDiskShape) {
+            c.g = geom::trackPolygonContact(area::frameOf(s, sc, i), quad.frame, list.features[p], sc.featureStats);
+        } else {
+            c.g = geom::circlePolygonContact(xi, s.radius[i], quad.world, 4);
+        }
+        if (!c.g.touching) {
+            xiHist[p] = 0;
+            areaHist[p] = 0;
+            continue;
+        }
+        ++contacts;
+        const Vec2 wallVel = walls.walls[seg.wall].velocity;
+        c.ri = c.g.point - xi;
+        c.vi = pointVelocity(s.vx.data(), s.vy.data(), s.omega.data(), i, c.ri);
+        c.vj = wallVel;
+        if (drift.vx) {
+            c.hasDrift = true;
+            c.di = pointVelocity(drift.vx, drift.vy, drift.omega, i, c.ri);
+            c.dj = wallVel;
+        }
+        c.mi = s.mass[i];
+        c.invIi = s.invInertia[i];
+        const ContactLaw& law = table[static_cast<std::size_t>(s.material[i]) * nm + seg.material];
+        const area::AreaForce f = area::areaLaw(*std::get_if<AreaNormal>(&law.normal), *std::get_if<D>(&law.damping),
+                                                *std::get_if<T>(&law.tangential), c, dt, xiHist[p], areaHist[p]);
+        s.fx[i] += f.onI.x;
+        s.fy[i] += f.onI.y;
+        s.torque[i] += cross(c.ri, f.onI);
+        wallForce[seg.wall] -= f.onI;
+        stats.maxRelativeOverlap = std::max(stats.maxRelativeOverlap, f.overlapDepth / s.radius[i]);
+    }
+    stats.wallContacts += contacts;
+}
+
 }  // namespace
+
+void ShapeContext::update(const model::ParticleStore& s) {
+    if (!anyPolygon) return;
+    const std::size_t n = s.size();
+    first.resize(n);
+    std::size_t total = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        first[i] = static_cast<std::uint32_t>(total);
+        if (s.shape[i] != model::kDiskShape) total += pool->count[s.shape[i]];
+    }
+    world.resize(total);
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::uint32_t k = s.shape[i];
+        if (k == model::kDiskShape) continue;
+        const Real c = std::cos(s.angle[i]), sn = std::sin(s.angle[i]);
+        const Vec2 x{s.x[i], s.y[i]};
+        const Vec2* body = pool->corners.data() + pool->start[k];
+        Vec2* out = world.data() + first[i];
+        for (std::uint32_t m = 0; m < pool->count[k]; ++m)
+            out[m] = {x.x + (c * body[m].x - sn * body[m].y), x.y + (sn * body[m].x + c * body[m].y)};
+    }
+}
 
 void computeForces(model::ParticleStore& s, const model::WallSet& walls, NeighborList& list, const LawTable& laws,
                    const BodyForces& body, const DriftVelocities& drift, Real dt, bool trialHistory,
-                   ForceStats& stats, std::vector<Vec2>& wallForce) noexcept {
+                   ForceStats& stats, std::vector<Vec2>& wallForce, ShapeContext& shapes) noexcept {
     const std::size_t n = s.size();
     for (std::size_t i = 0; i < n; ++i) {
         s.fx[i] = s.mass[i] * body.gravity.x - body.gamma * s.vx[i];
         s.fy[i] = s.mass[i] * body.gravity.y - body.gamma * s.vy[i];
         s.torque[i] = -body.gammaRotation * s.omega[i];
     }
+    if (body.springs)
+        for (const PullSpring& sp : *body.springs) {  // gc2d spec section 3.8
+            const std::uint32_t i = sp.slot;
+            const Real c = std::cos(s.angle[i]), sn = std::sin(s.angle[i]);
+            const Vec2 arm{c * sp.attach.x - sn * sp.attach.y, sn * sp.attach.x + c * sp.attach.y};
+            const Vec2 f = (sp.freeEnd(body.time) - (Vec2{s.x[i], s.y[i]} + arm)) * sp.stiffness;
+            s.fx[i] += f.x;
+            s.fy[i] += f.y;
+            s.torque[i] += cross(arm, f);
+        }
     stats = ForceStats{};
     for (auto& w : wallForce) w = Vec2{};
     if (trialHistory) {  // every evaluation of a step starts from the accepted history
         for (auto* l : {&list.pairs, &list.wallPairs}) {
             std::copy(l->xi.begin(), l->xi.end(), l->xiTrial.begin());
             std::copy(l->zeta.begin(), l->zeta.end(), l->zetaTrial.begin());
+            std::copy(l->areaOld.begin(), l->areaOld.end(), l->areaOldTrial.begin());
         }
     }
+    shapes.update(s);
     forEachBucket(list.pairs, laws, [&](auto* nT, auto* dT, auto* tT, std::uint32_t b, std::uint32_t e) {
         using N = std::remove_pointer_t<decltype(nT)>;
         using D = std::remove_pointer_t<decltype(dT)>;
         using T = std::remove_pointer_t<decltype(tT)>;
-        if (laws.hasRolling())
-            diskPairs<N, D, T, true>(s, list.pairs, b, e, laws, drift, dt, body.overlapGuard, trialHistory, stats);
-        else
-            diskPairs<N, D, T, false>(s, list.pairs, b, e, laws, drift, dt, body.overlapGuard, trialHistory, stats);
+        if constexpr (kAreaForm<N, D, T>) {
+            areaPairs<D, T>(s, list.pairs, b, e, laws, drift, dt, trialHistory, stats, shapes);
+        } else if constexpr (kDepthForm<N, D, T>) {
+            if (laws.hasRolling())
+                diskPairs<N, D, T, true>(s, list.pairs, b, e, laws, drift, dt, body.overlapGuard, trialHistory, stats);
+            else
+                diskPairs<N, D, T, false>(s, list.pairs, b, e, laws, drift, dt, body.overlapGuard, trialHistory, stats);
+        }
     });
     forEachBucket(list.wallPairs, laws, [&](auto* nT, auto* dT, auto* tT, std::uint32_t b, std::uint32_t e) {
         using N = std::remove_pointer_t<decltype(nT)>;
         using D = std::remove_pointer_t<decltype(dT)>;
         using T = std::remove_pointer_t<decltype(tT)>;
-        diskWalls<N, D, T>(s, walls, list.wallPairs, b, e, laws, drift, dt, trialHistory, stats, wallForce);
+        if constexpr (kAreaForm<N, D, T>)
+            areaWalls<D, T>(s, walls, list.wallPairs, b, e, laws, drift, dt, trialHistory, stats, wallForce, shapes);
+        else if constexpr (kDepthForm<N, D, T>)
+            diskWalls<N, D, T>(s, walls, list.wallPairs, b, e, laws, drift, dt, trialHistory, stats, wallForce);
     });
 }
 
-Real contactEnergy(const model::ParticleStore& s, const model::WallSet& walls, const NeighborList& list,
-                   const LawTable& laws) noexcept {
+namespace {
+/// Energy of the area contacts of one bucket: F_n h_eff / 2 + k_t xi^2 / 2.
+template <class T>
+Real areaEnergy(const model::ParticleStore& s, const model::WallSet& walls, const ContactList& cl, std::uint32_t b,
+                std::uint32_t e, const LawTable& laws, bool wall, ShapeContext& sc) {
     Real energy = 0;
     const std::uint32_t nm = laws.materialCount();
+    area::WallQuad quad;
+    for (std::uint32_t p = b; p < e; ++p) {
+        const std::uint32_t i = cl.first[p];
+        geom::FeatureCache cache = cl.features[p];  // a copy: energies do not disturb the tracking
+        geom::AreaContact g;
+        std::uint32_t otherMat;
+        Real l;
+        if (wall) {
+            const auto& seg = walls.segments[cl.second[p]];
+            area::wallQuad(seg.a, seg.b, {s.x[i], s.y[i]}, 2 * s.radius[i], quad);
+            if (s.shape[i] != model::kDiskShape) {
+                g = geom::trackPolygonContact(area::frameOf(s, sc, i), quad.frame, cache, sc.featureStats);
+            } else {
+                g = geom::circlePolygonContact({s.x[i], s.y[i]}, s.radius[i], quad.world, 4);
+            }
+            otherMat = seg.material;
+            l = norm(g.point - Vec2{s.x[i], s.y[i]});
+        } else {
+            const std::uint32_t j = cl.second[p];
+            g = area::pairGeometry(s, sc, i, j, cache);
+            otherMat = s.material[j];
+            const Real ri = norm(g.point - Vec2{s.x[i], s.y[i]}), rj = norm(g.point - Vec2{s.x[j], s.y[j]});
+            l = ri + rj > 0 ? ri * rj / (ri + rj) : 0;
+        }
+        if (!g.touching || !(l > 0)) continue;
+        const ContactLaw& law = laws.laws()[static_cast<std::size_t>(s.material[i]) * nm + otherMat];
+        const AreaNormal& nl = *std::get_if<AreaNormal>(&law.normal);
+        const Real h = g.area / l;
+        energy += 0.5 * nl.E * h * h;
+        if constexpr (std::is_same_v<T, AreaFriction>) {
+            const Real kt = std::get_if<AreaFriction>(&law.tangential)->kt;
+            energy += 0.5 * kt * cl.xi[p] * cl.xi[p];
+        }
+    }
+    return energy;
+}
+}  // namespace
+
+Real contactEnergy(const model::ParticleStore& s, const model::WallSet& walls, const NeighborList& list,
+                   const LawTable& laws, const ShapeContext& shapes) {
+    Real energy = 0;
+    const std::uint32_t nm = laws.materialCount();
+    ShapeContext sc = shapes;  // own scratch and statistics
+    sc.update(s);
     const auto eval = [&](const ContactList& cl, bool wall) {
         forEachBucket(cl, laws, [&](auto* nT, auto* dT, auto* tT, std::uint32_t b, std::uint32_t e) {
             using N = std::remove_pointer_t<decltype(nT)>;
             using D = std::remove_pointer_t<decltype(dT)>;
             using T = std::remove_pointer_t<decltype(tT)>;
-            for (std::uint32_t p = b; p < e; ++p) {
-                const std::uint32_t i = cl.first[p];
-                Real overlap, reff;
-                std::uint32_t otherMat;
-                if (wall) {
-                    const auto& seg = walls.segments[cl.second[p]];
-                    const auto g = geom::diskSegmentContact({s.x[i], s.y[i]}, s.radius[i], seg.a, seg.b, seg.startShared,
-                                                            seg.endShared, seg.prevDirection);
-                    overlap = g.touching ? g.overlap : 0;
-                    reff = s.radius[i];
-                    otherMat = seg.material;
-                } else {
-                    const std::uint32_t j = cl.second[p];
-                    const Real dx = s.x[j] - s.x[i], dy = s.y[j] - s.y[i];
-                    overlap = s.radius[i] + s.radius[j] - std::sqrt(dx * dx + dy * dy);
-                    reff = s.radius[i] * s.radius[j] / (s.radius[i] + s.radius[j]);
-                    otherMat = s.material[j];
+            if constexpr (kAreaForm<N, D, T>) {
+                energy += areaEnergy<T>(s, walls, cl, b, e, laws, wall, sc);
+            } else if constexpr (kDepthForm<N, D, T>) {
+                for (std::uint32_t p = b; p < e; ++p) {
+                    const std::uint32_t i = cl.first[p];
+                    Real overlap, reff;
+                    std::uint32_t otherMat;
+                    if (wall) {
+                        const auto& seg = walls.segments[cl.second[p]];
+                        const auto g = geom::diskSegmentContact({s.x[i], s.y[i]}, s.radius[i], seg.a, seg.b,
+                                                                seg.startShared, seg.endShared, seg.prevDirection);
+                        overlap = g.touching ? g.overlap : 0;
+                        reff = s.radius[i];
+                        otherMat = seg.material;
+                    } else {
+                        const std::uint32_t j = cl.second[p];
+                        const Real dx = s.x[j] - s.x[i], dy = s.y[j] - s.y[i];
+                        overlap = s.radius[i] + s.radius[j] - std::sqrt(dx * dx + dy * dy);
+                        reff = s.radius[i] * s.radius[j] / (s.radius[i] + s.radius[j]);
+                        otherMat = s.material[j];
+                    }
+                    if (overlap <= 0) continue;
+                    const auto law = resolve<N, D, T>(laws.laws()[static_cast<std::size_t>(s.material[i]) * nm + otherMat]);
+                    energy += dem::contactEnergy(law, overlap, reff, cl.xi[p], cl.zeta.empty() ? 0.0 : cl.zeta[p]);
                 }
-                if (overlap <= 0) continue;
-                const auto law = resolve<N, D, T>(laws.laws()[static_cast<std::size_t>(s.material[i]) * nm + otherMat]);
-                energy += dem::contactEnergy(law, overlap, reff, cl.xi[p], cl.zeta.empty() ? 0.0 : cl.zeta[p]);
             }
         });
     };

@@ -8,10 +8,28 @@
 #include "dem/integrator.hpp"
 #include "dem/law_table.hpp"
 #include "dem/neighbor_list.hpp"
+#include "geom/convex_contact.hpp"
 #include "model/particle_store.hpp"
+#include "model/shape_pool.hpp"
 #include "model/walls.hpp"
 
 namespace granulab::dem {
+
+/// A spring pulling one particle (gc2d spec section 3.8; model::SpringDef).
+struct PullSpring {
+    ParticleId id = 0;
+    std::uint32_t slot = 0;  ///< current slot of the particle (World keeps it in step)
+    Real stiffness = 0;      ///< [N/m]
+    Vec2 attach;             ///< [m] body frame
+    Vec2 pullStart;          ///< [m]
+    Vec2 velocity;           ///< [m/s] of the free end while moving
+    Real from = 0, to = 0;   ///< [s]
+    /// Free end at time t [m].
+    Vec2 freeEnd(Real t) const noexcept {
+        const Real tc = t < from ? from : (t > to ? to : t);
+        return pullStart + velocity * (tc - from);
+    }
+};
 
 struct BodyForces {
     Vec2 gravity;             ///< [m/s^2]
@@ -19,6 +37,20 @@ struct BodyForces {
                               ///< smaller radius (cfddem spec section 3.1); 0: off
     Real gamma = 0;           ///< [kg/s] global viscous damping F = -gamma v
     Real gammaRotation = 0;   ///< [kg m^2/s] torque = -gammaRotation omega
+    const std::vector<PullSpring>* springs = nullptr;
+    Real time = 0;            ///< [s] of the evaluation (spring motion)
+};
+
+/// Polygon shapes and their orientation at the current force evaluation (gc2d spec section 5.4,
+/// steps 2-3: computed once per particle, not per contact).
+struct ShapeContext {
+    const model::ShapePool* pool = nullptr;
+    std::vector<Vec2> world;             ///< [m] world corners of all polygons, slot order
+    std::vector<std::uint32_t> first;    ///< first world corner of each slot (polygons only)
+    geom::FeatureStats featureStats;     ///< closest-feature work since the last reset
+    bool anyPolygon = false;
+    /// Recomputes the world corners from positions and angles (gc2d Eq. 2.35, scale s = 1).
+    void update(const model::ParticleStore& s);
 };
 
 struct ForceStats {
@@ -34,13 +66,16 @@ struct ForceStats {
 /// accepted springs and write trial springs (committed by the caller once the step is accepted).
 /// reads: x, v (for damping), drift velocities, omega, radius, mass; writes: f, torque, list histories, stats,
 /// wallForce[w] = total contact force [N] the particles exert on wall w (size = wall count).
+/// `shapes`: polygon shapes (contacts of the gc2d area law; may be empty for disk-only scenes).
 void computeForces(model::ParticleStore& s, const model::WallSet& walls, NeighborList& list,
                    const LawTable& laws, const BodyForces& body, const DriftVelocities& drift, Real dt,
                    bool trialHistory, ForceStats& stats,
-                   std::vector<Vec2>& wallForce) noexcept;
+                   std::vector<Vec2>& wallForce, ShapeContext& shapes) noexcept;
 
 /// Elastic energy [J] stored in all contacts (normal and tangential springs); no side effects.
+/// For the gc2d area law, whose force has no potential in general, the normal part is estimated
+/// as F_n h_eff / 2 (exact for flat faces).
 Real contactEnergy(const model::ParticleStore& s, const model::WallSet& walls, const NeighborList& list,
-                   const LawTable& laws) noexcept;
+                   const LawTable& laws, const ShapeContext& shapes);
 
 }  // namespace granulab::dem

@@ -243,6 +243,6 @@ std::unique_ptr<Integrator> makeIntegrator(const IntegratorParams& p) {
     return nullptr;
 }
 
-std::vector<std::string> integratorNames() { return {"verlet", "euler", "pc", "gear"}; }
+std::vector<std::string> integratorNames() { return {"auto", "verlet", "euler", "pc", "gear"}; }
 
 }  // namespace granulab::dem

@@ -22,7 +22,11 @@ void LawTable::set(std::uint32_t a, std::uint32_t b, const ContactLaw& law) {
 void LawTable::finalize() {
     m_formRep.clear();
     m_hasRolling = false;
-    for (const auto& l : m_laws) m_hasRolling = m_hasRolling || rollingSettings(l.rolling).enabled;
+    m_hasArea = false;
+    for (const auto& l : m_laws) {
+        m_hasRolling = m_hasRolling || rollingSettings(l.rolling).enabled;
+        m_hasArea = m_hasArea || std::holds_alternative<AreaNormal>(l.normal);
+    }
     std::vector<std::array<std::size_t, 3>> signatures;
     for (std::size_t k = 0; k < m_laws.size(); ++k) {
         const auto& l = m_laws[k];

@@ -28,6 +28,9 @@ public:
     const std::vector<ContactLaw>& laws() const noexcept { return m_laws; }
     /// True if some material pair has rolling resistance (contacts then keep a rolling history).
     bool hasRolling() const noexcept { return m_hasRolling; }
+    /// True if some material pair uses the gc2d overlap-area law (contacts then keep the old
+    /// overlap area and a feature cache).
+    bool hasArea() const noexcept { return m_hasArea; }
 
 private:
     std::size_t index(std::uint32_t a, std::uint32_t b) const noexcept {
@@ -39,6 +42,7 @@ private:
     std::vector<std::uint32_t> m_formOf;
     std::vector<ContactLaw> m_formRep;
     bool m_hasRolling = false;
+    bool m_hasArea = false;
 };
 
 }  // namespace granulab::dem

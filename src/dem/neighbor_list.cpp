@@ -27,6 +27,8 @@ struct OldHistory {
     std::uint64_t key;
     Real xi;
     Real zeta;
+    Real areaOld;
+    geom::FeatureCache features;
     bool operator<(const OldHistory& o) const noexcept { return key < o.key; }
 };
 
@@ -37,7 +39,9 @@ std::vector<OldHistory> collectHistory(const ContactList& list, const std::vecto
     for (std::size_t k = 0; k < list.size(); ++k) {
         const Real xi = list.xi[k];
         Real zeta = list.zeta.empty() ? 0.0 : list.zeta[k];
-        if (xi == 0 && zeta == 0) continue;
+        const Real areaOld = list.areaOld.empty() ? 0.0 : list.areaOld[k];
+        geom::FeatureCache features = list.features.empty() ? geom::FeatureCache{} : list.features[k];
+        if (xi == 0 && zeta == 0 && areaOld == 0 && features.state == geom::FeatureCache::Cold) continue;
         std::uint32_t a = list.first[k], b = list.second[k];
         if (!oldToNew.empty()) {
             a = oldToNew[a];
@@ -49,10 +53,11 @@ std::vector<OldHistory> collectHistory(const ContactList& list, const std::vecto
                 if (a > b) {
                     std::swap(a, b);
                     zeta = -zeta;
+                    features = features.swapped();
                 }
             }
         }
-        out.push_back({pairKey(a, b), xi, zeta});
+        out.push_back({pairKey(a, b), xi, zeta, areaOld, features});
     }
     std::sort(out.begin(), out.end());
     return out;
@@ -79,15 +84,23 @@ void fillList(ContactList& list, const std::vector<std::uint64_t>& keys, const s
     const bool rolling = laws.hasRolling();
     list.zeta.assign(rolling ? keys.size() : 0, 0.0);
     list.zetaTrial.assign(rolling && trialHistory ? keys.size() : 0, 0.0);
+    const bool area = laws.hasArea();
+    list.areaOld.assign(area ? keys.size() : 0, 0.0);
+    list.areaOldTrial.assign(area && trialHistory ? keys.size() : 0, 0.0);
+    list.features.assign(area ? keys.size() : 0, geom::FeatureCache{});
     std::vector<std::uint32_t> fill(list.bucketStart.begin(), list.bucketStart.end() - 1);
     for (std::size_t k = 0; k < keys.size(); ++k) {
         const std::uint32_t pos = fill[formOfKey[k]]++;
         list.first[pos] = keyFirst(keys[k]);
         list.second[pos] = keySecond(keys[k]);
-        auto it = std::lower_bound(old.begin(), old.end(), OldHistory{keys[k], 0, 0});
+        auto it = std::lower_bound(old.begin(), old.end(), OldHistory{keys[k], 0, 0, 0, {}});
         if (it != old.end() && it->key == keys[k]) {
             list.xi[pos] = it->xi;
             if (rolling) list.zeta[pos] = it->zeta;
+            if (area) {
+                list.areaOld[pos] = it->areaOld;
+                list.features[pos] = it->features;
+            }
         }
     }
 }

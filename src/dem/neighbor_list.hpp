@@ -10,6 +10,7 @@
 
 #include "dem/broad_phase.hpp"
 #include "dem/law_table.hpp"
+#include "geom/convex_contact.hpp"
 #include "model/particle_store.hpp"
 #include "model/walls.hpp"
 
@@ -20,19 +21,24 @@ struct ContactList {
     std::vector<Real> xi;                      ///< [m] tangential spring, along t = perp(n) (accepted)
     std::vector<Real> xiTrial;                 ///< [m] trial springs of an iterating integrator
     std::vector<Real> zeta, zetaTrial;         ///< [m] rolling displacement (only with rolling laws)
+    // gc2d area contacts only (empty otherwise):
+    std::vector<Real> areaOld, areaOldTrial;   ///< [m^2] overlap area of the last step (Old_Area, Eq. 2.22)
+    std::vector<geom::FeatureCache> features;  ///< closest features / crossings of the last evaluation
     std::vector<std::uint32_t> bucketStart;    ///< formCount + 1 offsets
 
     /// Accepts the trial springs of the step (iterating integrators only).
     void commitHistory() noexcept {
         xi.swap(xiTrial);
         zeta.swap(zetaTrial);
+        areaOld.swap(areaOldTrial);
     }
 
     std::size_t size() const noexcept { return first.size(); }
     std::size_t memoryBytes() const noexcept {
         return first.capacity() * 4 + second.capacity() * 4 +
-               (xi.capacity() + xiTrial.capacity() + zeta.capacity() + zetaTrial.capacity()) * sizeof(Real) +
-               bucketStart.capacity() * 4;
+               (xi.capacity() + xiTrial.capacity() + zeta.capacity() + zetaTrial.capacity() + areaOld.capacity() +
+                areaOldTrial.capacity()) * sizeof(Real) +
+               features.capacity() * sizeof(geom::FeatureCache) + bucketStart.capacity() * 4;
     }
 };
 

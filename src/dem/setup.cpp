@@ -123,6 +123,18 @@ TimeStepAdvice adviseTimeStep(const LawTable& laws, const std::vector<std::strin
     const auto n = laws.materialCount();
     const auto consider = [&](std::uint32_t a, std::uint32_t b, Real meff, Real reff, const std::string& label) {
         if (!laws.has(a, b) || !(meff > 0)) return;
+        if (const auto* area = std::get_if<AreaNormal>(&laws.law(a, b).normal)) {
+            // gc2d Eq. 2.9: about ten steps per harmonic half period, m the lighter body. Called
+            // with the reduced mass for pairs: the lighter body is at most 2 meff.
+            const bool pair = label.find("wall(") == std::string::npos;
+            const Real m = pair ? std::min(minMass[a], minMass[b]) : meff;
+            const Real dt = kPi / 10.0 * std::sqrt(m / area->E);
+            if (advice.areaAdvisedDt == 0 || dt < advice.areaAdvisedDt) {
+                advice.areaAdvisedDt = dt;
+                advice.areaPair = label;
+            }
+            return;
+        }
         const Oscillator o = oscillatorOf(laws.law(a, b), meff, reff, speed);
         if (!(o.omegaMax > worst)) return;
         worst = o.omegaMax;
@@ -144,17 +156,35 @@ TimeStepAdvice adviseTimeStep(const LawTable& laws, const std::vector<std::strin
     return advice;
 }
 
+bool hasPolygons(const model::SceneDef& scene) noexcept {
+    for (const auto& p : scene.particles)
+        if (p.shape != "disk") return true;
+    for (const auto& b : scene.blocks)
+        if (b.shape != "disk") return true;
+    return false;
+}
+
+std::string integratorOf(const model::SceneDef& scene) {
+    if (scene.dem.integrator != "auto") return scene.dem.integrator;
+    return hasPolygons(scene) ? "gear" : "verlet";
+}
+
+std::string broadPhaseOf(const model::SceneDef& scene) {
+    if (scene.dem.broadPhase != "auto") return scene.dem.broadPhase;
+    return hasPolygons(scene) ? "sort_and_sweep" : "cell_grid";
+}
+
 WorldConfig makeWorldConfig(const model::SceneDef& scene, Real maxRadius) {
     WorldConfig c;
     c.dt = scene.dem.dt;
     c.gravity = scene.dem.gravity;
     c.skin = scene.dem.skin >= 0 ? scene.dem.skin : 0.2 * maxRadius;
-    c.integrator.name = scene.dem.integrator;
+    c.integrator.name = integratorOf(scene);
     c.integrator.tolerance = scene.dem.pcTolerance;
     c.integrator.maxIterations = static_cast<int>(scene.dem.pcIterations);
     c.integrator.corrector = scene.dem.pcCorrector;
     c.integrator.gearC0 = scene.dem.gearC0;
-    c.broadPhase = scene.dem.broadPhase;
+    c.broadPhase = broadPhaseOf(scene);
     c.sortEveryRebuilds = static_cast<int>(scene.dem.sortEvery);
     c.overlapGuard = scene.dem.overlapGuard ? 0.01 : 0.0;
     for (const auto& w : scene.dem.damping) {
@@ -181,9 +211,16 @@ World makeWorld(const model::SceneDef& scene, const model::InitialParticles& ini
     Real rmax = 0;
     for (std::size_t k = 0; k < initial.particles.size(); ++k) {
         const auto& p = initial.particles[k];
-        const Real m = model::particleMass(massModel, density[p.material], p.radius);
-        store.add(static_cast<ParticleId>(k), p.position, p.velocity, p.angle, p.omega, p.radius, m,
-                  model::particleInertia(massModel, m, p.radius), p.material);
+        const Real rho = density[p.material];
+        if (p.shape == model::kDiskShape) {
+            const Real m = model::particleMass(massModel, rho, p.radius);
+            store.add(static_cast<ParticleId>(k), p.position, p.velocity, p.angle, p.omega, p.radius, m,
+                      model::particleInertia(massModel, m, p.radius), p.material);
+        } else {  // gc2d Eq. 2.10-2.12 with the areal density [kg/m^2]
+            store.add(static_cast<ParticleId>(k), p.position, p.velocity, p.angle, p.omega, p.radius,
+                      rho * initial.shapes.area[p.shape], rho * initial.shapes.secondMoment[p.shape], p.material,
+                      p.shape);
+        }
         rmax = std::max(rmax, p.radius);
     }
     model::WallSet walls;
@@ -194,7 +231,20 @@ World makeWorld(const model::SceneDef& scene, const model::InitialParticles& ini
         walls.addPolyline(def.name.empty() ? fmt::format("wall{}", w) : def.name, def.points, def.closed, mat,
                           def.velocity);
     }
-    return World(makeWorldConfig(scene, rmax), std::move(store), std::move(walls), std::move(laws));
+    WorldConfig config = makeWorldConfig(scene, rmax);
+    for (const auto& def : scene.springs) {  // ids are generation indices, equal to slots at t = 0
+        PullSpring sp;
+        sp.id = static_cast<ParticleId>(def.particle);
+        sp.slot = static_cast<std::uint32_t>(def.particle);
+        sp.stiffness = def.stiffness;
+        sp.attach = def.attach;
+        sp.pullStart = def.pullStart;
+        sp.velocity = Vec2{std::cos(def.direction), std::sin(def.direction)} * def.speed;
+        sp.from = def.from;
+        sp.to = def.to;
+        config.springs.push_back(sp);
+    }
+    return World(std::move(config), std::move(store), std::move(walls), std::move(laws), initial.shapes);
 }
 
 }  // namespace granulab::dem

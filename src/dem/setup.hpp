@@ -26,6 +26,8 @@ struct TimeStepAdvice {
     Real advisedDt = 0;       ///< [s] min(contactTime / 50, stabilityLimit / 10)
     Real stabilityLimit = 0;  ///< [s] 2 / omega_max: velocity Verlet is unstable above it
     std::string pair;         ///< which contact sets the limit, e.g. "grain-grain"
+    Real areaAdvisedDt = 0;   ///< [s] gc2d rule (pi/10) sqrt(m_min/E) of the area-law contacts (0: none)
+    std::string areaPair;     ///< which area-law contact sets it
 };
 
 /// `usedByWalls[m]` tells which materials walls use; `minMass[m]` [kg] and `minRadius[m]` [m] are
@@ -33,6 +35,13 @@ struct TimeStepAdvice {
 /// are analysed for an impact at `speed` [m/s].
 TimeStepAdvice adviseTimeStep(const LawTable& laws, const std::vector<std::string>& names, const std::vector<Real>& minMass,
                               const std::vector<Real>& minRadius, const std::vector<bool>& usedByWalls, Real speed);
+
+/// True if some particle or block of the scene uses a polygon [[shape]].
+bool hasPolygons(const model::SceneDef& scene) noexcept;
+/// The integrator and broad phase a scene runs with ("auto": gear and sort_and_sweep with
+/// polygons, the gc2d defaults; verlet and cell_grid otherwise).
+std::string integratorOf(const model::SceneDef& scene);
+std::string broadPhaseOf(const model::SceneDef& scene);
 
 /// Translates the scene's damping windows etc. into the engine configuration.
 WorldConfig makeWorldConfig(const model::SceneDef& scene, Real maxRadius);

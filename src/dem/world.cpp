@@ -24,23 +24,33 @@ const char* stageName(Stage s) noexcept {
     return "?";
 }
 
-World::World(WorldConfig config, model::ParticleStore store, model::WallSet walls, LawTable laws)
+World::World(WorldConfig config, model::ParticleStore store, model::WallSet walls, LawTable laws,
+             model::ShapePool shapes)
     : m_config(std::move(config)),
       m_store(std::move(store)),
       m_walls(std::move(walls)),
       m_laws(std::move(laws)),
+      m_pool(std::move(shapes)),
       m_broad(makeBroadPhase(m_config.broadPhase)),
       m_integrator(makeIntegrator(m_config.integrator)),
       m_wallForce(m_walls.walls.size()) {
     if (!m_broad) throw std::invalid_argument("unknown broad phase " + m_config.broadPhase);
     if (!m_integrator) throw std::invalid_argument("unknown integrator " + m_config.integrator.name);
     m_minRadius = m_store.size() ? *std::min_element(m_store.radius.begin(), m_store.radius.end()) : 0;
+    m_shapes.anyPolygon = m_pool.size() > 0;
+}
+
+void World::evaluateForces(const BodyForces& body, const DriftVelocities& drift, bool trial) {
+    m_shapes.pool = &m_pool;
+    computeForces(m_store, m_walls, m_list, m_laws, body, drift, m_config.dt, trial, m_stats, m_wallForce, m_shapes);
 }
 
 BodyForces World::bodyForcesAt(std::int64_t step) const noexcept {
     BodyForces b;
     b.gravity = m_config.gravity;
     b.overlapGuard = m_config.overlapGuard;
+    b.springs = m_config.springs.empty() ? nullptr : &m_config.springs;
+    b.time = static_cast<Real>(step) * m_config.dt;
     for (const auto& w : m_config.damping)
         if (step >= w.fromStep && step < w.toStep) {
             b.gamma += w.gamma;
@@ -59,6 +69,7 @@ void World::rebuildNeighbors() {
             m_integrator->permute(order);
             oldToNew.resize(order.size());
             for (std::size_t k = 0; k < order.size(); ++k) oldToNew[order[k]] = static_cast<std::uint32_t>(k);
+            for (auto& sp : m_config.springs) sp.slot = oldToNew[sp.slot];
         }
     }
     m_list.rebuild(m_store, m_walls, m_config.skin, time(), *m_broad, m_laws, oldToNew,
@@ -69,8 +80,7 @@ void World::initialize() {
     m_walls.setTime(time());
     rebuildNeighbors();
     // Set-up evaluation: nothing has moved yet, so no tangential displacement (drift = none).
-    computeForces(m_store, m_walls, m_list, m_laws, bodyForcesAt(m_step), DriftVelocities{}, m_config.dt, false,
-                  m_stats, m_wallForce);
+    evaluateForces(bodyForcesAt(m_step), DriftVelocities{}, false);
 }
 
 std::uint32_t World::step() {
@@ -101,8 +111,7 @@ std::uint32_t World::step() {
     for (int iteration = 0;; ++iteration) {
         {  // 4+6 narrow phase + contact laws + body forces. reads: x, v, omega; writes: f, torque, history
             ScopedStage t(m_timers, Stage::Forces);
-            computeForces(m_store, m_walls, m_list, m_laws, body, m_integrator->driftVelocities(), dt, trial, m_stats,
-                          m_wallForce);
+            evaluateForces(body, m_integrator->driftVelocities(), trial);
         }
         ++m_forceEvaluations;
         bool accepted;
@@ -126,7 +135,9 @@ Energies World::energies() const noexcept {
         e.rotational += 0.5 * inertia * s.omega[i] * s.omega[i];
         e.potential -= s.mass[i] * (m_config.gravity.x * s.x[i] + m_config.gravity.y * s.y[i]);
     }
-    e.elastic = contactEnergy(m_store, m_walls, m_list, m_laws);
+    ShapeContext shapes = m_shapes;
+    shapes.pool = &m_pool;
+    e.elastic = contactEnergy(m_store, m_walls, m_list, m_laws, shapes);
     return e;
 }
 
@@ -138,7 +149,7 @@ Vec2 World::momentum() const noexcept {
 
 std::size_t World::memoryBytes() const noexcept {
     return m_store.size() * model::ParticleStore::kBytesPerParticle + m_list.memoryBytes() + m_broad->memoryBytes() +
-           m_integrator->memoryBytes();
+           m_integrator->memoryBytes() + m_pool.memoryBytes() + m_shapes.world.capacity() * sizeof(Vec2) + m_shapes.first.capacity() * 4;
 }
 
 namespace {
@@ -149,6 +160,8 @@ void writeList(std::ostream& os, const ContactList& l) {
     writeVector(os, l.second);
     writeVector(os, l.xi);
     writeVector(os, l.zeta);
+    writeVector(os, l.areaOld);
+    writeVector(os, l.features);
     writeVector(os, l.bucketStart);
 }
 void readList(std::istream& is, ContactList& l) {
@@ -156,6 +169,8 @@ void readList(std::istream& is, ContactList& l) {
     readVector(is, l.second);
     readVector(is, l.xi);
     readVector(is, l.zeta);
+    readVector(is, l.areaOld);
+    readVector(is, l.features);
     readVector(is, l.bucketStart);
 }
 }  // namespace
@@ -169,6 +184,7 @@ void World::saveState(std::ostream& os) const {
         writeVector(os, *col);
     writeVector(os, s.material);
     writeVector(os, s.id);
+    writeVector(os, s.shape);
     writeList(os, m_list.pairs);
     writeList(os, m_list.wallPairs);
     writeVector(os, m_list.x0);
@@ -188,6 +204,10 @@ void World::loadState(std::istream& is) {
         readVector(is, *col);
     readVector(is, s.material);
     readVector(is, s.id);
+    readVector(is, s.shape);
+    for (auto& sp : m_config.springs)  // slots of the restored (possibly re-sorted) store
+        for (std::uint32_t k = 0; k < s.size(); ++k)
+            if (s.id[k] == sp.id) sp.slot = k;
     readList(is, m_list.pairs);
     readList(is, m_list.wallPairs);
     readVector(is, m_list.x0);
@@ -200,6 +220,7 @@ void World::loadState(std::istream& is) {
         for (auto* l : {&m_list.pairs, &m_list.wallPairs}) {
             l->xiTrial.assign(l->size(), 0.0);
             l->zetaTrial.assign(l->zeta.size(), 0.0);
+            l->areaOldTrial.assign(l->areaOld.size(), 0.0);
         }
     }
     m_walls.setTime(time());

@@ -39,6 +39,7 @@ struct WorldConfig {
     Real overlapGuard = 0;            ///< see BodyForces::overlapGuard
     IntegratorParams integrator;
     std::string broadPhase = "cell_grid";
+    std::vector<PullSpring> springs;  ///< slots refer to the store given to the World
 };
 
 /// Bit flags returned by World::step (STYLE.md: step() never throws).
@@ -59,7 +60,8 @@ struct Energies {
 
 class World {
 public:
-    World(WorldConfig config, model::ParticleStore store, model::WallSet walls, LawTable laws);
+    World(WorldConfig config, model::ParticleStore store, model::WallSet walls, LawTable laws,
+          model::ShapePool shapes = {});
 
     /// First neighbour build and force evaluation (skipped after loadState).
     void initialize();
@@ -74,6 +76,11 @@ public:
     const NeighborList& neighbors() const noexcept { return m_list; }
     const LawTable& laws() const noexcept { return m_laws; }
     const ForceStats& forceStats() const noexcept { return m_stats; }
+    /// Closest-feature work of polygon contacts since t = 0 (or the resume).
+    const geom::FeatureStats& featureStats() const noexcept { return m_shapes.featureStats; }
+    const model::ShapePool& shapes() const noexcept { return m_pool; }
+    /// Springs with their current slots.
+    const std::vector<PullSpring>& springs() const noexcept { return m_config.springs; }
     /// Total contact force [N] on each wall at the last force evaluation.
     const std::vector<Vec2>& wallForce() const noexcept { return m_wallForce; }
     const StageTimers<Stage>& timers() const noexcept { return m_timers; }
@@ -94,12 +101,15 @@ public:
 
 private:
     void rebuildNeighbors();
+    void evaluateForces(const BodyForces& body, const DriftVelocities& drift, bool trial);
     BodyForces bodyForcesAt(std::int64_t step) const noexcept;
 
     WorldConfig m_config;
     model::ParticleStore m_store;
     model::WallSet m_walls;
     LawTable m_laws;
+    model::ShapePool m_pool;
+    ShapeContext m_shapes;  ///< pool pointer refreshed at every use (World is movable)
     std::unique_ptr<BroadPhase> m_broad;
     std::unique_ptr<Integrator> m_integrator;
     NeighborList m_list;

@@ -112,11 +112,7 @@ AreaContact chainContact(const PolygonFrame& A, const PolygonFrame& B, int a1, i
     return c;
 }
 
-std::vector<Vec2> worldCorners(const PolygonFrame& p) {
-    std::vector<Vec2> out(static_cast<std::size_t>(p.n));
-    for (int k = 0; k < p.n; ++k) out[static_cast<std::size_t>(k)] = p.corner(k);
-    return out;
-}
+std::vector<Vec2> worldCorners(const PolygonFrame& p) { return {p.corners, p.corners + p.n}; }
 
 /// Full clipping (rare: deep overlaps, containment, several crossings).
 AreaContact clipContact(const PolygonFrame& A, const PolygonFrame& B) {
@@ -134,7 +130,7 @@ AreaContact clipContact(const PolygonFrame& A, const PolygonFrame& B) {
 
 /// True if the overlap found from two crossings may miss further crossings.
 inline bool deepOverlap(const AreaContact& c, const PolygonFrame& A, const PolygonFrame& B) noexcept {
-    const Real rin = std::min(A.inradius * A.scale, B.inradius * B.scale);
+    const Real rin = std::min(A.inradius, B.inradius);
     return !(c.area <= 0.25 * rin * norm(c.c2 - c.c1)) || !std::isfinite(c.area);
 }
 

@@ -18,21 +18,18 @@
 
 namespace granulab::geom {
 
-/// A convex counter-clockwise polygon placed in the world: corner k is
-/// centre + scale R(angle) body[k] (gc2d Eq. 2.35 with counter-clockwise angles).
+/// A convex counter-clockwise polygon placed in the world. The world corners are computed once
+/// per particle and force evaluation (gc2d spec section 5.4, step 3), not per contact.
 struct PolygonFrame {
-    const Vec2* body = nullptr;  ///< [m] body-frame corners
+    const Vec2* corners = nullptr;  ///< [m] world corners, counter-clockwise
     int n = 0;
-    Vec2 centre;                 ///< [m]
-    Real cs = 1, sn = 0;         ///< cos and sin of the angle
-    Real scale = 1;              ///< thermal size factor s (gc2d spec section 2.4)
-    Real inradius = 0;           ///< [m] inscribed radius about the centre (body frame, unscaled)
+    Vec2 centre;                    ///< [m] centroid
+    Real inradius = 0;              ///< [m] inscribed radius about the centroid
 
     Vec2 corner(int k) const noexcept {
         if (k >= n) k -= n;
         if (k < 0) k += n;
-        const Vec2 b = body[k];
-        return {centre.x + scale * (cs * b.x - sn * b.y), centre.y + scale * (sn * b.x + cs * b.y)};
+        return corners[k];
     }
 };
 

@@ -13,7 +13,7 @@ namespace granulab::io {
 
 namespace {
 constexpr std::uint64_t kMagic = 0x544b434c42414e47ULL;  // "GNABLCKT"
-constexpr std::uint32_t kVersion = 3;  // 3: + integrator name
+constexpr std::uint32_t kVersion = 4;  // 3: + integrator name; 4: + polygon shapes, area-contact state
 }  // namespace
 
 void writeCheckpoint(const std::string& dir, const CheckpointHeader& header, const OutputCounters& counters,

@@ -8,12 +8,15 @@
 
 #include "core/error.hpp"
 #include "model/scene_def.hpp"
+#include "model/shape_pool.hpp"
 
 namespace granulab::model {
 
 struct InitialParticle {
     Vec2 position, velocity;
-    Real angle = 0, omega = 0, radius = 0;
+    Real angle = 0, omega = 0;
+    Real radius = 0;                      ///< [m] disk radius, or the polygon's circumradius
+    std::uint32_t shape = kDiskShape;     ///< index into InitialParticles::shapes
     std::uint32_t material = 0;
     std::uint32_t origin = 0;  ///< index into InitialParticles::origins (where it was defined)
 };
@@ -21,6 +24,7 @@ struct InitialParticle {
 struct InitialParticles {
     std::vector<InitialParticle> particles;  ///< id = index
     std::vector<SourceLoc> origins;          ///< explicit particles and blocks, by origin index
+    ShapePool shapes;                        ///< polygon shapes of the particles
 };
 
 /// Mass [kg] and moment of inertia [kg m^2] of a disk of radius r [m] and areal density rho.

@@ -20,11 +20,11 @@ void permuteColumn(std::vector<T>& col, const std::vector<std::uint32_t>& order)
 
 void ParticleStore::reserve(std::size_t n) {
     reserveAll(n, x, y, vx, vy, angle, omega, fx, fy, torque, radius, mass, invMass, invInertia,
-               material, id);
+               material, id, shape);
 }
 
 std::size_t ParticleStore::add(ParticleId pid, Vec2 pos, Vec2 vel, Real angle0, Real omega0, Real r,
-                               Real m, Real inertia, std::uint32_t mat) {
+                               Real m, Real inertia, std::uint32_t mat, std::uint32_t shapeIndex) {
     x.push_back(pos.x);
     y.push_back(pos.y);
     vx.push_back(vel.x);
@@ -40,6 +40,7 @@ std::size_t ParticleStore::add(ParticleId pid, Vec2 pos, Vec2 vel, Real angle0, 
     invInertia.push_back(inertia > 0 ? 1.0 / inertia : 0.0);
     material.push_back(mat);
     id.push_back(pid);
+    shape.push_back(shapeIndex);
     return x.size() - 1;
 }
 
@@ -59,6 +60,7 @@ void ParticleStore::permute(const std::vector<std::uint32_t>& order) {
     permuteColumn(invInertia, order);
     permuteColumn(material, order);
     permuteColumn(id, order);
+    permuteColumn(shape, order);
 }
 
 }  // namespace granulab::model

@@ -7,11 +7,10 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "model/shape_pool.hpp"
 
 namespace granulab::model {
 
-/// Shape kind of a particle; polygons arrive with issue 4.
-enum class ShapeKind : std::uint8_t { Disk = 0 };
 
 struct ParticleStore {
     std::vector<Real> x, y;        ///< [m] centre of mass
@@ -20,24 +19,25 @@ struct ParticleStore {
     std::vector<Real> omega;       ///< [rad/s]
     std::vector<Real> fx, fy;      ///< [N] total force of the last force evaluation
     std::vector<Real> torque;      ///< [N m]
-    std::vector<Real> radius;      ///< [m] disk radius / bounding radius
+    std::vector<Real> radius;      ///< [m] disk radius / polygon circumradius (bounding circle)
     std::vector<Real> mass;        ///< [kg]
     std::vector<Real> invMass;     ///< [1/kg]
     std::vector<Real> invInertia;  ///< [1/(kg m^2)]
     std::vector<std::uint32_t> material;  ///< index into the material table
     std::vector<ParticleId> id;           ///< stable id
+    std::vector<std::uint32_t> shape;     ///< index into the ShapePool, kDiskShape for disks
 
     std::size_t size() const noexcept { return x.size(); }
 
     void reserve(std::size_t n);
     /// Appends one particle; forces start at zero. Returns its slot.
     std::size_t add(ParticleId pid, Vec2 pos, Vec2 vel, Real angle0, Real omega0, Real r, Real m,
-                    Real inertia, std::uint32_t mat);
+                    Real inertia, std::uint32_t mat, std::uint32_t shapeIndex = kDiskShape);
     /// Reorders all columns: new slot k holds old slot order[k].
     void permute(const std::vector<std::uint32_t>& order);
 
     /// Bytes held per particle by the columns above.
-    static constexpr std::size_t kBytesPerParticle = 13 * sizeof(Real) + sizeof(std::uint32_t) +
+    static constexpr std::size_t kBytesPerParticle = 13 * sizeof(Real) + 2 * sizeof(std::uint32_t) +
                                                      sizeof(ParticleId);
 };
 

@@ -79,17 +79,18 @@ TEST(ContactHistory, SlotPermutationKeepsTheSpringAndTheForces) {
     ASSERT_EQ(list.pairs.size(), 1u);
     list.pairs.xi[0] = 1e-3;
     std::vector<Vec2> wallForce;
+    dem::ShapeContext shapes;
     dem::ForceStats stats;
     const std::vector<Real> noVel(2, 0.0);
     const dem::DriftVelocities still{noVel.data(), noVel.data(), noVel.data()};
-    dem::computeForces(s, walls, list, laws, {}, still, 1e-4, false, stats, wallForce);
+    dem::computeForces(s, walls, list, laws, {}, still, 1e-4, false, stats, wallForce, shapes);
     const Real fy1 = s.fy[1], tq1 = s.torque[1], xiBefore = list.pairs.xi[0];
     // Swap the slots: the pair (0, 1) becomes (1, 0) and is stored as (0, 1) with the ids swapped.
     s.permute({1, 0});
     list.rebuild(s, walls, 0.1, 0, broad, laws, {1, 0}, false);
     ASSERT_EQ(list.pairs.size(), 1u);
     EXPECT_EQ(list.pairs.xi[0], xiBefore);  // the spring is symmetric under exchange of the bodies
-    dem::computeForces(s, walls, list, laws, {}, still, 1e-4, false, stats, wallForce);
+    dem::computeForces(s, walls, list, laws, {}, still, 1e-4, false, stats, wallForce, shapes);
     EXPECT_NEAR(s.fy[0], fy1, 1e-12);  // slot 0 now holds id 1
     EXPECT_NEAR(s.torque[0], tq1, 1e-12);
 }

@@ -48,13 +48,18 @@ Real inradiusOf(const std::vector<Vec2>& p) {
     return r;
 }
 
+/// World corners live in a small ring of buffers so that a few frames can coexist.
 PolygonFrame frame(const std::vector<Vec2>& body, Vec2 c, Real angle) {
+    static std::vector<Vec2> buffers[8];
+    static int next = 0;
+    auto& w = buffers[next++ % 8];
+    w.clear();
+    const Real cs = std::cos(angle), sn = std::sin(angle);
+    for (const auto& b : body) w.push_back(c + Vec2{cs * b.x - sn * b.y, sn * b.x + cs * b.y});
     PolygonFrame f;
-    f.body = body.data();
+    f.corners = w.data();
     f.n = static_cast<int>(body.size());
     f.centre = c;
-    f.cs = std::cos(angle);
-    f.sn = std::sin(angle);
     f.inradius = inradiusOf(body);
     return f;
 }

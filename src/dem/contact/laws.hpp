@@ -58,7 +58,32 @@ struct HertzNormal {
     Real energy(Real overlap, Real reff) const noexcept { return 0.4 * force(overlap, reff) * overlap; }
 };
 
-using NormalLaw = std::variant<HookeNormal, HertzNormal>;
+/// gc2d overlap-area law (gc2d spec section 3.2, Eq. 2.20): F_n = E A / l with the overlap area A
+/// and l = r_i r_j/(r_i + r_j) from the lever arms of the contact point; cohesion (Eq. 2.28)
+/// k_coh |c1 c2| pulls while the bodies overlap. Works for every shape pair and is the law of
+/// polygon contacts; its kernel is forces_area.cpp, not the overlap-depth kernel.
+struct AreaNormal {
+    static constexpr LawAxis kAxis = LawAxis::Normal;
+    static constexpr const char* kKeyword = "area";
+    static constexpr const char* kDoc =
+        "gc2d overlap-area law F_n = E A / l, l = r_i r_j/(r_i + r_j); cohesion k_coh |c1 c2| (any shapes, required by polygons)";
+    static std::vector<LawParamSpec> params() {
+        return {lawParam("E", "N/m", 0, kUnbounded, true, "required", "2D elastic modulus (gc2d default 1e7)"),
+                lawParam("cohesion", "N/m", 0, kUnbounded, false, "0",
+                         "k_coh: attraction k_coh |c1 c2| along -n while overlapping (gc2d Eq. 2.28)")};
+    }
+    static AreaNormal make(const LawParams& p) { return {p.require("E"), p.getOr("cohesion", 0.0)}; }
+
+    Real E = 0;         ///< [N/m]
+    Real cohesion = 0;  ///< [N/m]
+    // The depth interface of the other normal laws, for generic code (time-step advice) only:
+    // a flat face of unit length, A = delta.
+    Real force(Real overlap, Real /*reff*/) const noexcept { return E * overlap; }
+    Real stiffness(Real /*overlap*/, Real /*reff*/) const noexcept { return E; }
+    Real energy(Real overlap, Real /*reff*/) const noexcept { return 0.5 * E * overlap * overlap; }
+};
+
+using NormalLaw = std::variant<HookeNormal, HertzNormal, AreaNormal>;
 
 // ---------------------------------------------------------------- normal damping
 // Each returns the normal damping coefficient c [N s/m]; the damping force is c * v_n.
@@ -146,7 +171,25 @@ struct MassScaledDamping {
     Real coefficient(Real meff, Real /*stiffness*/) const noexcept { return meff * gammaN; }
 };
 
-using DampingLaw = std::variant<NoDamping, ViscousDamping, RestitutionDamping, MassScaledDamping, LehrDamping>;
+/// gc2d normal damping (gc2d spec section 3.3, Eq. 2.21/2.22 with erratum 1): D = gamma
+/// sqrt(E m_perp) dA / (l dt), dA the change of the overlap area since the last step; while
+/// separating clipped so that F_n + D >= 0 (never attractive). Only with normal = "area".
+struct AreaDamping {
+    static constexpr LawAxis kAxis = LawAxis::Damping;
+    static constexpr const char* kKeyword = "gamma";
+    static constexpr const char* kDoc =
+        "gc2d damping gamma sqrt(E m_perp) dA/(l dt), clipped so the contact never attracts (normal = \"area\")";
+    static std::vector<LawParamSpec> params() {
+        return {lawParam("gamma", "-", 0, kUnbounded, false, "required", "damping factor (gc2d default 0.5; 0 elastic)")};
+    }
+    static AreaDamping make(const LawParams& p) { return {p.require("gamma")}; }
+
+    Real gamma = 0;
+    Real coefficient(Real /*meff*/, Real /*stiffness*/) const noexcept { return 0; }  // not a depth law
+};
+
+using DampingLaw =
+    std::variant<NoDamping, ViscousDamping, RestitutionDamping, MassScaledDamping, LehrDamping, AreaDamping>;
 
 // ---------------------------------------------------------------- tangential
 /// Frictionless contact.
@@ -275,7 +318,45 @@ struct MindlinTangential {
     }
 };
 
-using TangentialLaw = std::variant<NoFriction, CundallStrack, MindlinTangential>;
+/// gc2d Cundall-Strack friction (gc2d spec section 3.4, Eq. 2.23-2.27, errata 3 and 4): a spring
+/// S += k_t v_par dt attached at first touch, a viscous term sqrt(k_t m_par) v_par, the total
+/// capped at mu F_n (Coulomb, Eq. 2.24) or mu (|v_par| / 1 m/s)^(-1/10) F_n (Rabinowicz,
+/// Eq. 2.25), the spring clipped to the cap. Only with normal = "area".
+struct AreaFriction {
+    static constexpr LawAxis kAxis = LawAxis::Tangential;
+    static constexpr const char* kKeyword = "gc2d";
+    static constexpr const char* kDoc =
+        "gc2d Cundall-Strack spring k_t (2/7 E) + sqrt(k_t m_par) v_par, capped at mu F_n, spring clipped (normal = \"area\")";
+    static std::vector<LawParamSpec> params() {
+        LawParamSpec damped = lawParam("damped", "-", 0, 1, false, "true", "viscous term sqrt(k_t m_par) v_par (gc2d Eq. 2.26)");
+        damped.isBool = true;
+        LawParamSpec rab = lawParam("rabinowicz", "-", 0, 1, false, "false",
+                                    "velocity-weakening cap mu (|v_par| / 1 m/s)^(-1/10) F_n (gc2d Eq. 2.25)");
+        rab.isBool = true;
+        LawParamSpec total = lawParam("cap_total", "-", 0, 1, false, "false",
+                                      "cap with the total normal force (elastic + damping - cohesion), not the elastic one");
+        total.isBool = true;
+        return {lawParam("mu", "-", 0, kUnbounded, false, "required", "friction coefficient (gc2d default 0.6)"),
+                lawParam("kt", "N/m", 0, kUnbounded, false, "2/7 E", "tangential spring stiffness"), damped, rab, total};
+    }
+    static AreaFriction make(const LawParams& p) {
+        AreaFriction f;
+        f.mu = p.require("mu");
+        f.kt = p.getOr("kt", 2.0 / 7.0 * p.getOr("E", 0.0));
+        f.damped = p.getOr("damped", 1.0) != 0.0;
+        f.rabinowicz = p.getOr("rabinowicz", 0.0) != 0.0;
+        f.capTotal = p.getOr("cap_total", 0.0) != 0.0;
+        return f;
+    }
+
+    Real mu = 0;
+    Real kt = 0;  ///< [N/m]
+    bool damped = true;
+    bool rabinowicz = false;
+    bool capTotal = false;
+};
+
+using TangentialLaw = std::variant<NoFriction, CundallStrack, MindlinTangential, AreaFriction>;
 
 // ---------------------------------------------------------------- rolling resistance
 // Not part of the compile-time form of a law: the pair loop is compiled with and without rolling

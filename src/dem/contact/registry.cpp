@@ -136,6 +136,26 @@ ContactLaw buildContactLaw(const model::ContactDef& def, const std::string& ctx,
                         fmt::format("{} = {} is out of range; allowed {} [{}]", key, v, spec->rangeText(), spec->unit));
     }
 
+    // The gc2d area family (normal "area", damping "gamma", tangential "gc2d") has its own kernel
+    // and is not combined with the overlap-depth laws.
+    if (allKnown) {
+        const bool area = def.normal == AreaNormal::kKeyword;
+        const bool dampingOk = area ? (def.damping == NoDamping::kKeyword || def.damping == AreaDamping::kKeyword)
+                                    : def.damping != AreaDamping::kKeyword;
+        const bool tangentialOk = area ? (def.tangential == NoFriction::kKeyword || def.tangential == AreaFriction::kKeyword)
+                                       : def.tangential != AreaFriction::kKeyword;
+        if (!dampingOk)
+            diags.error(def.loc, ctx + ".damping",
+                        area ? fmt::format("normal = \"area\" takes damping \"none\" or \"gamma\", got '{}'", def.damping)
+                             : "damping = \"gamma\" belongs to normal = \"area\" (gc2d overlap-area law)");
+        if (!tangentialOk)
+            diags.error(def.loc, ctx + ".tangential",
+                        area ? fmt::format("normal = \"area\" takes tangential \"none\" or \"gc2d\", got '{}'", def.tangential)
+                             : "tangential = \"gc2d\" belongs to normal = \"area\" (gc2d overlap-area law)");
+        if (area && def.rolling != NoRolling::kKeyword)
+            diags.error(def.loc, ctx + ".rolling", "normal = \"area\" has no rolling resistance law (polygons roll on their corners)");
+    }
+
     ContactLaw law;
     const LawParams params(values, {def.normal, def.damping, def.tangential, def.rolling}, materials);
     makeByKeyword(def.normal, params, law.normal);

@@ -1,0 +1,135 @@
+// SPDX-License-Identifier: MIT
+// Force kernel of the gc2d overlap-area contact model (gc2d spec section 3, Eq. 2.15-2.29 with
+// errata 1-5 of section 12) for every shape pair: polygon-polygon (tracked crossings),
+// disk-polygon, disk-disk (lens) and particle-wall (a wall segment acts as an immovable convex
+// quadrilateral of thickness 2 r behind the segment, on the side away from the particle).
+// Included by forces.cpp only; D and T are the damping and tangential alternatives of the bucket.
+#pragma once
+#include <cmath>
+#include <limits>
+#include <type_traits>
+#include <vector>
+
+#include "dem/forces.hpp"
+#include "geom/circle_contact.hpp"
+#include "geom/convex_contact.hpp"
+
+namespace granulab::dem::area {
+
+/// Frame of the polygon particle i (the shape must not be kDiskShape).
+inline geom::PolygonFrame frameOf(const model::ParticleStore& s, const ShapeContext& sc, std::uint32_t i) noexcept {
+    const std::uint32_t k = s.shape[i];
+    geom::PolygonFrame f;
+    f.corners = sc.world.data() + sc.first[i];
+    f.n = static_cast<int>(sc.pool->count[k]);
+    f.centre = {s.x[i], s.y[i]};
+    f.inradius = sc.pool->inradius[k];
+    return f;
+}
+
+/// Geometry of the pair (i, j), normal pushing i away from j.
+inline geom::AreaContact pairGeometry(const model::ParticleStore& s, ShapeContext& sc, std::uint32_t i,
+                                      std::uint32_t j, geom::FeatureCache& cache) noexcept {
+    const bool pi = s.shape[i] != model::kDiskShape, pj = s.shape[j] != model::kDiskShape;
+    const Vec2 ci{s.x[i], s.y[i]}, cj{s.x[j], s.y[j]};
+    if (pi && pj) return geom::trackPolygonContact(frameOf(s, sc, i), frameOf(s, sc, j), cache, sc.featureStats);
+    if (!pi && !pj) return geom::circleCircleContact(ci, s.radius[i], cj, s.radius[j]);
+    if (!pi) {
+        const auto f = frameOf(s, sc, j);
+        return geom::circlePolygonContact(ci, s.radius[i], f.corners, f.n);
+    }
+    const auto f = frameOf(s, sc, i);
+    geom::AreaContact g = geom::circlePolygonContact(cj, s.radius[j], f.corners, f.n);
+    g.normal = -g.normal;  // computed for the disk j
+    std::swap(g.c1, g.c2);
+    return g;
+}
+
+/// The immovable quadrilateral standing for a wall segment behind its face seen from `from`.
+struct WallQuad {
+    Vec2 world[4];  ///< [m] corners, counter-clockwise
+    geom::PolygonFrame frame;
+};
+inline void wallQuad(Vec2 a, Vec2 b, Vec2 from, Real thickness, WallQuad& q) noexcept {
+    if (cross(b - a, from - a) < 0) std::swap(a, b);  // particle on the left of a -> b
+    const Vec2 d = b - a;
+    const Real len = norm(d);
+    const Vec2 out = len > 0 ? Vec2{d.y, -d.x} / len : Vec2{0, -1};  // right of a -> b: the solid side
+    const Vec2 w[4] = {a, a + out * thickness, b + out * thickness, b};  // counter-clockwise
+    for (int k = 0; k < 4; ++k) q.world[k] = w[k];
+    q.frame.corners = q.world;
+    q.frame.n = 4;
+    q.frame.centre = (w[0] + w[1] + w[2] + w[3]) * 0.25;
+    q.frame.inradius = 0.5 * std::min(thickness, len);
+}
+
+/// Everything the gc2d law needs about one contact; j may be a wall (infinite mass).
+struct AreaPair {
+    geom::AreaContact g;
+    Vec2 ri, rj;             ///< [m] lever arms s - x_i, s - x_j (rj unused for walls)
+    Vec2 vi, vj;             ///< [m/s] contact-point velocities (vj: wall surface velocity)
+    Vec2 di, dj;             ///< [m/s] contact-point drift velocities for the spring increment
+    bool hasDrift = false;
+    Real mi = 0, mj = 0;     ///< [kg] (mj = inf for walls)
+    Real invIi = 0, invIj = 0;
+    bool wall = false;
+};
+
+struct AreaForce {
+    Vec2 onI;           ///< [N] force on i (on j: the opposite)
+    Real overlapDepth;  ///< [m] h_eff = A / l
+};
+
+/// gc2d Eq. 2.20-2.29 for one contact; updates the spring xi [m] and the old area [m^2].
+template <class D, class T>
+AreaForce areaLaw(const AreaNormal& nl, const D& dl, const T& tl, const AreaPair& c, Real dt, Real& ioXi,
+                  Real& ioAreaOld) noexcept {
+    const auto& g = c.g;
+    const Real ri = norm(c.ri);
+    // 1/l with l = r_i r_j/(r_i + r_j) (Eq. 2.15); a wall's lever arm is infinite (spec 3.7): l = r_i.
+    Real invL;
+    if (c.wall) {
+        invL = 1.0 / ri;
+    } else {
+        const Real rj = norm(c.rj);
+        invL = (ri + rj) / (ri * rj);
+    }
+    AreaForce out{{0, 0}, 0};
+    if (!(invL > 0) || !std::isfinite(invL)) return out;
+    const Real hEff = g.area * invL;  // effective penetration depth A / l [m]
+    const Real fel = nl.E * hEff;     // Eq. 2.20
+    out.overlapDepth = hEff;
+    Real fn = fel;
+    if constexpr (std::is_same_v<D, AreaDamping>) {  // Eq. 2.21/2.22, erratum 1
+        const Real mperp = c.wall ? c.mi : c.mi * c.mj / (c.mi + c.mj);
+        const Real dA = g.area - ioAreaOld;
+        Real damp = dl.gamma * std::sqrt(nl.E * mperp) * dA * invL / dt;
+        if (dA < 0) damp = std::max(damp, -fel);  // separating: never attractive
+        fn += damp;
+    }
+    ioAreaOld = g.area;
+    const Real fcoh = nl.cohesion * norm(g.c2 - g.c1);  // Eq. 2.28
+    const Vec2 n = g.normal, t = perp(n);
+    Real fpar = 0;
+    if constexpr (std::is_same_v<T, AreaFriction>) {  // Eq. 2.23-2.27, errata 2-4
+        const Real vpar = dot(c.vi - c.vj, t);
+        const Real dpar = c.hasDrift ? dot(c.di - c.dj, t) : 0.0;
+        ioXi += dpar * dt;  // S = k_t xi, the spring attached at first touch
+        const Real invMpar = 1.0 / c.mi + (c.wall ? 0.0 : 1.0 / c.mj) + norm2(c.ri) * c.invIi +
+                             (c.wall ? 0.0 : norm2(c.rj) * c.invIj);
+        const Real spring = tl.kt * ioXi;
+        const Real visc = tl.damped ? std::sqrt(tl.kt / invMpar) * vpar : 0.0;
+        const Real trial = spring + visc;
+        Real cap = tl.mu * (tl.capTotal ? std::max<Real>(fn - fcoh, 0) : fel);
+        if (tl.rabinowicz) {  // mu (|v|/1 m/s)^(-1/10): unbounded at rest, the spring holds
+            const Real v = std::abs(vpar);
+            cap = v > 0 ? cap * std::pow(v, -0.1) : std::numeric_limits<Real>::infinity();
+        }
+        fpar = trial >= 0 ? std::min(trial, cap) : -std::min(-trial, cap);
+        if (std::abs(spring) > cap) ioXi = (ioXi >= 0 ? cap : -cap) / tl.kt;  // the spring slides along
+    }
+    out.onI = n * (fn - fcoh) - t * fpar;  // Eq. 2.29
+    return out;
+}
+
+}  // namespace granulab::dem::area

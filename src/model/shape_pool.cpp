@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: MIT
+// Shape pool: re-centring and the cached mass properties of each shape (gc2d spec section 2.2).
+#include "model/shape_pool.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "geom/polygon.hpp"
+
+namespace granulab::model {
+
+std::uint32_t ShapePool::add(const std::vector<Vec2>& ccw) {
+    const geom::PolygonMass m = geom::polygonMass(ccw);
+    const auto k = size();
+    start.push_back(static_cast<std::uint32_t>(corners.size()));
+    count.push_back(static_cast<std::uint32_t>(ccw.size()));
+    Real rOut = 0;
+    for (const Vec2& p : ccw) {
+        corners.push_back(p - m.centroid);
+        rOut = std::max(rOut, norm(p - m.centroid));
+    }
+    // Inscribed radius about the centroid: distance to the nearest edge line (convex polygon).
+    Real rIn = rOut;
+    const std::size_t n = ccw.size();
+    for (std::size_t e = 0; e < n; ++e) {
+        const Vec2 a = ccw[e] - m.centroid, b = ccw[(e + 1) % n] - m.centroid;
+        const Real len = norm(b - a);
+        if (len > 0) rIn = std::min(rIn, cross(b - a, -a) / len);
+    }
+    area.push_back(m.area);
+    secondMoment.push_back(m.secondMoment);
+    circumradius.push_back(rOut);
+    inradius.push_back(std::max<Real>(rIn, 0));
+    return k;
+}
+
+std::vector<Vec2> ShapePool::shapeCorners(std::uint32_t k) const {
+    return {corners.begin() + start[k], corners.begin() + start[k] + count[k]};
+}
+
+}  // namespace granulab::model
