@@ -24,7 +24,13 @@ int infoCommand(const std::string& scenePath, const std::vector<io::Override>& o
     fmt::print("engine       {} ({}D), integrator {}, broad phase {}\n", scene.run.engine, scene.run.dimension,
                dem::integratorOf(scene), dem::broadPhaseOf(scene));
     const char* kind = scene.dem.massModel == "sphere" ? "spheres (moving in the plane)" : "disks";
-    fmt::print("particles    {} {}\n", ps.size(), kind);
+    std::size_t polygons = 0;
+    for (const auto& p : ps) polygons += p.shape != model::kDiskShape;
+    if (polygons == 0)
+        fmt::print("particles    {} {}\n", ps.size(), kind);
+    else
+        fmt::print("particles    {} ({} polygons, {} {}), {} shapes\n", ps.size(), polygons, ps.size() - polygons, kind,
+                   v.initial.shapes.size());
     for (std::size_t m = 0; m < names.size(); ++m) {
         std::size_t count = 0;
         Real rmin = 1e300, rmax = 0, mass = 0;
@@ -33,12 +39,14 @@ int infoCommand(const std::string& scenePath, const std::vector<io::Override>& o
                 ++count;
                 rmin = std::min(rmin, p.radius);
                 rmax = std::max(rmax, p.radius);
-                mass += model::particleMass(model::massModelOf(scene.dem.massModel), scene.materials[m].density, p.radius);
+                mass += p.shape == model::kDiskShape
+                            ? model::particleMass(model::massModelOf(scene.dem.massModel), scene.materials[m].density, p.radius)
+                            : scene.materials[m].density * v.initial.shapes.area[p.shape];
             }
         if (count)
-            fmt::print("  material {:<12} {:>9} particles, radius {:.4g}..{:.4g} m, density {:.4g} kg/m^{}, total mass {:.4g} kg\n",
-                       names[m], count, rmin, rmax, scene.materials[m].density, scene.dem.massModel == "sphere" ? 3 : 2,
-                       mass);
+            fmt::print("  material {:<12} {:>9} particles, radius {:.4g}..{:.4g} m{}, density {:.4g} kg/m^{}, total mass {:.4g} kg\n",
+                       names[m], count, rmin, rmax, polygons ? " (polygons: circumradius)" : "", scene.materials[m].density,
+                       scene.dem.massModel == "sphere" ? 3 : 2, mass);
         else
             fmt::print("  material {:<12} (walls only)\n", names[m]);
     }
@@ -51,11 +59,16 @@ int infoCommand(const std::string& scenePath, const std::vector<io::Override>& o
                    c.damping, c.tangential, c.rolling);
     fmt::print("time step    dt = {:.4g} s, end time {:.6g} s, {} steps\n", scene.dem.dt, scene.run.endTime,
                static_cast<long long>(scene.run.endTime / scene.dem.dt + 0.5));
-    fmt::print("contact time {:.4g} s ({}, impact at {:.3g} m/s for nonlinear laws), {:.1f} steps per contact\n",
-               v.advice.contactTime, v.advice.pair, v.impactSpeed, v.advice.contactTime / scene.dem.dt);
-    fmt::print("advised dt   {:.4g} s (contact time / 50, at most stability limit / 10); stability limit {:.4g} s\n",
-               v.advice.advisedDt,
-               v.advice.stabilityLimit);
+    if (v.advice.contactTime > 0) {
+        fmt::print("contact time {:.4g} s ({}, impact at {:.3g} m/s for nonlinear laws), {:.1f} steps per contact\n",
+                   v.advice.contactTime, v.advice.pair, v.impactSpeed, v.advice.contactTime / scene.dem.dt);
+        fmt::print("advised dt   {:.4g} s (contact time / 50, at most stability limit / 10); stability limit {:.4g} s\n",
+                   v.advice.advisedDt, v.advice.stabilityLimit);
+    }
+    if (v.advice.areaAdvisedDt > 0)
+        fmt::print("area law dt  {:.4g} s by the gc2d rule (pi/10) sqrt(m/E) of the {} contact, lightest particle; "
+                   "an upper bound: confirm with a smaller dt\n",
+                   v.advice.areaAdvisedDt, v.advice.areaPair);
     // Estimate: particle store + Verlet half-step velocities (24 B) + neighbour-list reference
     // positions (16 B) + cell grid (12 B) + ~3 candidate pairs per disk (16 B each, history included).
     const double perDisk = static_cast<double>(model::ParticleStore::kBytesPerParticle) + 24 + 16 + 12 + 3 * 16;

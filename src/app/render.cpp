@@ -96,7 +96,10 @@ Extent scanExtent(const std::vector<Snapshot>& snaps) {
     for (const Snapshot& s : snaps) {
         const io::ParticleFrame f = io::readParticlesVtp(s.particles.string());
         for (std::size_t i = 0; i < f.x.size(); ++i) {
-            ext.add({f.x[i], f.y[i]}, f.radius[i]);
+            if (f.isPolygon(i))
+                for (std::size_t c = f.cornerStart[i]; c < f.cornerStart[i + 1]; ++c) ext.add(f.corners[c], 0);
+            else
+                ext.add({f.x[i], f.y[i]}, f.radius[i]);
             if (std::isfinite(f.speed[i])) ext.maxSpeed = std::max(ext.maxSpeed, f.speed[i]);
         }
         if (s.walls.empty()) continue;
@@ -123,13 +126,42 @@ void setColour(cairo_t* cr, Rgb c) { cairo_set_source_rgb(cr, c.r, c.g, c.b); }
 
 constexpr Rgb kDark{0.12, 0.12, 0.14};
 
-void drawDisks(cairo_t* cr, const RenderLayout& L, const io::ParticleFrame& f, double maxSpeed) {
+/// Polygon i of the frame as a filled outline in its speed colour.
+void drawPolygon(cairo_t* cr, const RenderLayout& L, const io::ParticleFrame& f, std::size_t i, Rgb fill) {
+    cairo_new_path(cr);
+    for (std::size_t c = f.cornerStart[i]; c < f.cornerStart[i + 1]; ++c) {
+        const Vec2 p = L.toPixel(f.corners[c]);
+        if (c == f.cornerStart[i])
+            cairo_move_to(cr, p.x, p.y);
+        else
+            cairo_line_to(cr, p.x, p.y);
+    }
+    cairo_close_path(cr);
+    setColour(cr, fill);
+    const double r = f.radius[i] * L.scale;  // [px] circumradius
+    if (r < 1.5) {  // too small for an outline
+        cairo_fill(cr);
+        return;
+    }
+    cairo_fill_preserve(cr);
+    setColour(cr, kDark);
+    cairo_set_line_width(cr, std::clamp(0.08 * r, 0.5, 1.5));
+    cairo_set_line_join(cr, CAIRO_LINE_JOIN_MITER);
+    cairo_stroke(cr);
+}
+
+/// Disks (circle, outline, angle mark) and polygons (filled outline), coloured by speed.
+void drawParticles(cairo_t* cr, const RenderLayout& L, const io::ParticleFrame& f, double maxSpeed) {
     for (std::size_t i = 0; i < f.x.size(); ++i) {
+        const Rgb fill = viridis(f.speed[i] / maxSpeed);
+        if (f.isPolygon(i)) {
+            drawPolygon(cr, L, f, i, fill);
+            continue;
+        }
         const Vec2 c = L.toPixel({f.x[i], f.y[i]});
         const double r = f.radius[i] * L.scale;  // [px]
         cairo_new_path(cr);
         cairo_arc(cr, c.x, c.y, r, 0, 2 * kPi);
-        const Rgb fill = viridis(f.speed[i] / maxSpeed);
         setColour(cr, fill);
         if (r < 1.5) {  // too small for outline and angle mark
             cairo_fill(cr);
@@ -205,7 +237,7 @@ bool renderFrame(const RenderLayout& L, const Snapshot& s, double maxSpeed, int 
     cairo_t* cr = cairo_create(surface);
     cairo_set_source_rgb(cr, 1, 1, 1);
     cairo_paint(cr);
-    drawDisks(cr, L, f, maxSpeed > 0 ? maxSpeed : 1.0);
+    drawParticles(cr, L, f, maxSpeed > 0 ? maxSpeed : 1.0);
     if (!s.walls.empty()) drawWalls(cr, L, io::readWallsVtp(s.walls.string()));
     drawHeader(cr, L, fmt::format("t = {:.{}f} s", s.time, decimals), maxSpeed);
     cairo_destroy(cr);

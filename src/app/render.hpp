@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// `granulab render OUTDIR`: one PNG per snapshot of OUTDIR/snapshots.pvd (cairo), disks coloured
-// by speed (viridis, one scale for all frames), walls, a colour bar and the time.
+// `granulab render OUTDIR`: one PNG per snapshot of OUTDIR/snapshots.pvd (cairo), disks and
+// polygons (filled outlines of their world corners) coloured by speed (viridis, one scale for
+// all frames), walls, a colour bar and the time.
 #pragma once
 #include <string>
 
@@ -25,8 +26,8 @@ struct RenderLayout {
 };
 
 /// Layout of a picture `widthPixels` wide of the world box lo..hi [m] (all disks with their
-/// radius and all walls): adds a 3 % margin per axis and a few pixels for line widths; the
-/// height follows from the aspect ratio of the box.
+/// radius, all polygon corners and all walls): adds a 3 % margin per axis and a few pixels for
+/// line widths; the height follows from the aspect ratio of the box.
 RenderLayout makeLayout(Vec2 lo, Vec2 hi, int widthPixels);
 
 /// Renders OUTDIR/png/frame_NNNNNN.png for every snapshot (NNNNNN = snapshot index of the file).

@@ -80,8 +80,8 @@ public:
 
     void snapshot(const dem::World& world, io::OutputCounters& counters) {
         if (!m_vtk) return;
-        io::writeSnapshot(m_dir, static_cast<int>(counters.nextSnapshot++), world.store(), world.walls(), world.time(),
-                          m_pvd);
+        io::writeSnapshot(m_dir, static_cast<int>(counters.nextSnapshot++), world.store(), world.shapes(), world.walls(),
+                          world.time(), m_pvd);
         m_series.flush();
     }
 
@@ -226,7 +226,9 @@ int runCommand(const RunOptions& opt) {
         warnings.push_back(fmt::format("overlap guard skipped {} particle-pair contact evaluations", guardSkips));
         fmt::print(stderr, "warning: {}\n", warnings.back());  // warnings are shown even with --quiet
     }
-    if (ok) io::writeFinalCsv(dir + "/final.csv", world.store(), dem::materialNames(scene));
+    if (ok)
+        io::writeFinalCsv(dir + "/final.csv", world.store(), world.shapes(), dem::materialNames(scene),
+                          model::massModelOf(scene.dem.massModel));
 
     const std::int64_t steps = world.stepIndex() - loopStartStep;
     const double loopSeconds = loopEnd - loopStart;

@@ -321,7 +321,9 @@ AreaContact trackPolygonContact(const PolygonFrame& A, const PolygonFrame& B, Fe
                                 FeatureStats& stats) noexcept {
     ++stats.evaluations;
     if (cache.state == FeatureCache::Crossing) {
-        int a1 = cache.f[0] % A.n, b1 = cache.f[1] % B.n, a2 = cache.f[2] % A.n, b2 = cache.f[3] % B.n;
+        // (the cache always holds valid indices; the guard only protects against a foreign cache)
+        const auto idx = [](std::uint16_t f, int n) { return f < n ? static_cast<int>(f) : 0; };
+        int a1 = idx(cache.f[0], A.n), b1 = idx(cache.f[1], B.n), a2 = idx(cache.f[2], A.n), b2 = idx(cache.f[3], B.n);
         AreaContact c;
         if (trackCrossings(A, B, a1, b1, a2, b2, c, stats)) {
             cache.f[0] = static_cast<std::uint16_t>(a1);
@@ -331,7 +333,7 @@ AreaContact trackPolygonContact(const PolygonFrame& A, const PolygonFrame& B, Fe
             return c;
         }
         // Probably separated: walk from the edges of the last crossing.
-        int fa = 2 * (cache.f[0] % A.n) + 1, fb = 2 * (cache.f[1] % B.n) + 1;
+        int fa = 2 * a1 + 1, fb = 2 * b1 + 1;  // a1, b1 as cached (the search leaves them unchanged on failure)
         if (linCanny(A, B, fa, fb, stats.iterations) == Walk::Apart) {
             cache.state = FeatureCache::Apart;
             cache.f[0] = static_cast<std::uint16_t>(fa);
@@ -341,7 +343,7 @@ AreaContact trackPolygonContact(const PolygonFrame& A, const PolygonFrame& B, Fe
         return coldStart(A, B, cache, stats);
     }
     if (cache.state == FeatureCache::Apart) {
-        int fa = cache.f[0] % (2 * A.n), fb = cache.f[1] % (2 * B.n);
+        int fa = cache.f[0] < 2 * A.n ? cache.f[0] : 0, fb = cache.f[1] < 2 * B.n ? cache.f[1] : 0;
         if (linCanny(A, B, fa, fb, stats.iterations) == Walk::Apart) {
             cache.f[0] = static_cast<std::uint16_t>(fa);
             cache.f[1] = static_cast<std::uint16_t>(fb);

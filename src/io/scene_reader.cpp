@@ -3,9 +3,11 @@
 // consumed, so that anything left over is reported as an unknown key with a hint.
 #include "io/scene_reader.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 #include <toml++/toml.h>
@@ -148,12 +150,44 @@ public:
         return true;
     }
 
+    /// Array of [x, y] points [m]; counts are checked by validate().
+    bool points(const std::string& key, std::vector<Vec2>& out) {
+        const toml::node* n = node(key);
+        if (!n) return false;
+        const toml::array* a = n->as_array();
+        if (!a) {
+            typeError(key, *n, "an array of [x, y] points");
+            return false;
+        }
+        bool ok = true;
+        for (const auto& e : *a) {
+            const toml::array* pt = e.as_array();
+            if (!pt || pt->size() != 2 || !(*pt)[0].is_number() || !(*pt)[1].is_number()) {
+                m_diags.error(locOf(e, m_file), keyPath(key), "each point must be [x, y] in m");
+                ok = false;
+                continue;
+            }
+            const Real x = (*pt)[0].value<double>().value_or(0), y = (*pt)[1].value<double>().value_or(0);
+            if (!std::isfinite(x) || !std::isfinite(y)) {
+                m_diags.error(locOf(e, m_file), keyPath(key), "points must be finite");
+                ok = false;
+                continue;
+            }
+            out.push_back({x, y});
+        }
+        return ok;
+    }
+
+    /// Marks a key as dealt with (already reported) without listing it as allowed here.
+    void ignore(const std::string& key) { m_ignored.push_back(key); }
+
     /// Reports keys that were never asked for.
     void finish() {
         for (auto&& [k, v] : m_table) {
             const std::string key(k.str());
             bool known = false;
             for (const auto& kk : m_known) known = known || kk == key;
+            for (const auto& kk : m_ignored) known = known || kk == key;
             if (!known)
                 m_diags.error(locOf(v, m_file), keyPath(key),
                               fmt::format("unknown key{}; allowed here: {}", didYouMean(key, m_known),
@@ -169,6 +203,7 @@ private:
     const std::string& m_file;
     Diagnostics& m_diags;
     std::vector<std::string> m_known;
+    std::vector<std::string> m_ignored;
 };
 
 /// Calls fn(reader, index) for every table of an array of tables `key` of `root`.
@@ -324,7 +359,93 @@ void readContact(TableReader& r, model::ContactDef& c) {
     }
 }
 
-void readParticle(TableReader& r, model::ParticleDef& p) {
+/// Keys of a [[shape]] besides name, kind, rotation_mode and rotation, by kind (gc2d spec
+/// section 2.3; docs/scene-format.md "Shapes").
+const std::vector<std::string>& shapeKeysOf(const std::string& kind) {
+    static const std::map<std::string, std::vector<std::string>> keys = {
+        {"polygon", {"corners"}},
+        {"regular", {"corner_count", "radius"}},
+        {"rectangle", {"size", "chamfer"}},
+        {"ellipse", {"size", "corner_count"}},
+        {"grain", {"size", "full_axes", "size_mode", "size_variation", "corner_count", "corner_count_mode",
+                   "corner_variation", "corner_angles"}},
+        {"", {"corners", "corner_count", "radius", "size", "chamfer", "full_axes", "size_mode", "size_variation",
+              "corner_count_mode", "corner_variation", "corner_angles"}},
+    };
+    const auto it = keys.find(kind);
+    return it != keys.end() ? it->second : keys.at("");
+}
+
+void readShape(TableReader& r, model::ShapeDef& s) {
+    s.loc = r.loc();
+    if (!r.string("name", s.name) && !r.table().get("name"))
+        r.diags().error(s.loc, r.keyPath("name"), "missing: shape name, used by `shape = \"name\"` in [[particle]] and [[block]]");
+    static const std::vector<std::string> kinds = {"polygon", "regular", "rectangle", "ellipse", "grain"};
+    const bool kindOk = r.choice("kind", s.kind, kinds);
+    if (!r.table().get("kind"))
+        r.diags().error(s.loc, r.keyPath("kind"), fmt::format("missing: shape kind, allowed: {}", joinList(kinds)));
+    const auto& allowed = shapeKeysOf(kindOk ? s.kind : "");
+    const auto has = [&](const std::string& key) { return std::find(allowed.begin(), allowed.end(), key) != allowed.end(); };
+    for (const auto& key : shapeKeysOf("")) {
+        const toml::node* n = r.table().get(key);
+        if (has(key) || !n) continue;
+        std::vector<std::string> own = {"name", "kind"};
+        own.insert(own.end(), allowed.begin(), allowed.end());
+        own.insert(own.end(), {"rotation_mode", "rotation"});
+        r.diags().error(locOf(*n, r.file()), r.keyPath(key),
+                        fmt::format("does not apply to a shape of kind '{}'; keys of {} shapes: {}", s.kind, s.kind, joinList(own)));
+        r.ignore(key);
+    }
+    const auto require = [&](const std::string& key, const std::string& what) {
+        if (kindOk && !r.table().get(key))
+            r.diags().error(s.loc, r.keyPath(key), fmt::format("missing: {} (required for kind '{}')", what, s.kind));
+    };
+    if (has("corners")) {
+        r.points("corners", s.corners);
+        require("corners", "[[x0, y0], [x1, y1], ...] in m, counter-clockwise, convex");
+    }
+    if (has("corner_angles")) r.string("corner_angles", s.cornerAngles);
+    if (has("corner_count")) {
+        r.integer("corner_count", s.cornerCount);
+        if (s.kind != "grain" || s.cornerAngles != "special_rectangle") require("corner_count", "number of corners, >= 3");
+    }
+    if (has("radius")) {
+        r.number("radius", s.radius);
+        require("radius", "circumscribed radius in m, allowed (0, inf)");
+    }
+    if (has("size")) {
+        r.vec2("size", s.size);
+        require("size", s.kind == "rectangle" ? "[a, b], the edge lengths in m" : "[a, b], the semi-axes in m");
+    }
+    if (has("chamfer")) r.number("chamfer", s.chamfer);
+    if (has("full_axes")) r.boolean("full_axes", s.fullAxes);
+    if (has("size_mode")) r.string("size_mode", s.sizeMode);
+    if (has("size_variation")) r.number("size_variation", s.sizeVariation);
+    if (has("corner_count_mode")) r.string("corner_count_mode", s.cornerCountMode);
+    if (has("corner_variation")) r.integer("corner_variation", s.cornerVariation);
+    r.string("rotation_mode", s.rotationMode);
+    r.number("rotation", s.rotation);
+}
+
+/// Whether `name` is a [[shape]] (a polygon shape) rather than "disk" or an unknown name.
+bool isShapeName(const std::vector<model::ShapeDef>& shapes, const std::string& name) {
+    return std::any_of(shapes.begin(), shapes.end(), [&](const model::ShapeDef& s) { return s.name == name; });
+}
+
+/// Reads `radius` for disks (required) and unknown shape names (optional; the name is reported
+/// by validate()); for a [[shape]] a radius is an error. Returns false if the radius is not read.
+bool radiusForShape(TableReader& r, const std::string& shape, const std::vector<model::ShapeDef>& shapes) {
+    const toml::node* n = r.table().get("radius");
+    if (shape == "disk" || !isShapeName(shapes, shape)) return true;
+    if (n) {
+        r.diags().error(locOf(*n, r.file()), r.keyPath("radius"),
+                        fmt::format("radius belongs to disks; the size of shape '{}' comes from its [[shape]]", shape));
+        r.ignore("radius");
+    }
+    return false;
+}
+
+void readParticle(TableReader& r, model::ParticleDef& p, const std::vector<model::ShapeDef>& shapes) {
     p.loc = r.loc();
     r.string("shape", p.shape);
     if (!r.vec2("position", p.position) && !r.table().get("position"))
@@ -332,12 +453,13 @@ void readParticle(TableReader& r, model::ParticleDef& p) {
     r.vec2("velocity", p.velocity);
     r.number("angle", p.angle);
     r.number("omega", p.omega);
-    if (!r.number("radius", p.radius) && !r.table().get("radius"))
+    const bool readRadius = radiusForShape(r, p.shape, shapes);
+    if (readRadius && !r.number("radius", p.radius) && !r.table().get("radius") && p.shape == "disk")
         r.diags().error(p.loc, r.keyPath("radius"), "missing: radius in m, allowed (0, inf)");
     r.string("material", p.material);
 }
 
-void readBlock(TableReader& r, model::BlockDef& b) {
+void readBlock(TableReader& r, model::BlockDef& b, const std::vector<model::ShapeDef>& shapes) {
     b.loc = r.loc();
     std::string lattice = "hexagonal";
     r.choice("lattice", lattice, {"hexagonal", "square", "random"});
@@ -358,8 +480,11 @@ void readBlock(TableReader& r, model::BlockDef& b) {
     Vec2 origin;
     if (r.vec2("origin", origin)) b.origin = origin;
     r.integer("count", b.count);
-    readSize(r, "radius", b.radius);
-    if (!r.table().get("radius")) r.diags().error(b.loc, r.keyPath("radius"), "missing: radius in m or a distribution table");
+    if (radiusForShape(r, b.shape, shapes)) {
+        readSize(r, "radius", b.radius);
+        if (!r.table().get("radius") && b.shape == "disk")
+            r.diags().error(b.loc, r.keyPath("radius"), "missing: radius in m or a distribution table");
+    }
     r.string("material", b.material);
     r.vec2("velocity", b.velocity);
     r.number("temperature", b.temperature);
@@ -368,29 +493,27 @@ void readBlock(TableReader& r, model::BlockDef& b) {
 void readWall(TableReader& r, model::WallDef& w) {
     w.loc = r.loc();
     r.string("name", w.name);
-    const toml::node* n = r.node("points");
-    if (!n) {
+    if (!r.points("points", w.points) && !r.table().get("points"))
         r.diags().error(w.loc, r.keyPath("points"), "missing: [[x0, y0], [x1, y1], ...] in m");
-    } else if (const toml::array* a = n->as_array()) {
-        for (const auto& e : *a) {
-            const toml::array* pt = e.as_array();
-            if (!pt || pt->size() != 2 || !(*pt)[0].is_number() || !(*pt)[1].is_number()) {
-                r.diags().error(locOf(e, r.file()), r.keyPath("points"), "each point must be [x, y] in m");
-                continue;
-            }
-            const Real x = (*pt)[0].value<double>().value_or(0), y = (*pt)[1].value<double>().value_or(0);
-            if (!std::isfinite(x) || !std::isfinite(y)) {
-                r.diags().error(locOf(e, r.file()), r.keyPath("points"), "points must be finite");
-                continue;
-            }
-            w.points.push_back({x, y});
-        }
-    } else {
-        r.typeError("points", *n, "an array of [x, y] points");
-    }
     r.boolean("closed", w.closed);
     r.string("material", w.material);
     r.vec2("velocity", w.velocity);
+}
+
+/// [[spring]]: gc2d DRAG spring (spec section 3.8).
+void readSpring(TableReader& r, model::SpringDef& sp) {
+    sp.loc = r.loc();
+    if (!r.integer("particle", sp.particle) && !r.table().get("particle"))
+        r.diags().error(sp.loc, r.keyPath("particle"), "missing: id of the pulled particle (generation order, from 0)");
+    sp.stiffness = 100;  // gc2d DRAG_K default [N/m]
+    r.number("k", sp.stiffness);
+    r.vec2("attach", sp.attach);
+    if (!r.vec2("pull_start", sp.pullStart) && !r.table().get("pull_start"))
+        r.diags().error(sp.loc, r.keyPath("pull_start"), "missing: [x, y] in m, the free end at t <= from");
+    r.number("speed", sp.speed);
+    r.number("direction", sp.direction);
+    r.number("from", sp.from);
+    r.number("to", sp.to);
 }
 
 void readOutput(TableReader& r, model::OutputDef& o) {
@@ -497,20 +620,30 @@ SceneDef buildScene(toml::table& root, const std::string& path, const std::vecto
         readContact(t, c);
         scene.contacts.push_back(c);
     });
+    forEachTable(r, "shape", [&](TableReader& t, std::size_t) {  // before particles and blocks use them
+        model::ShapeDef sh;
+        readShape(t, sh);
+        scene.shapes.push_back(sh);
+    });
     forEachTable(r, "particle", [&](TableReader& t, std::size_t) {
         model::ParticleDef p;
-        readParticle(t, p);
+        readParticle(t, p, scene.shapes);
         scene.particles.push_back(p);
     });
     forEachTable(r, "block", [&](TableReader& t, std::size_t) {
         model::BlockDef b;
-        readBlock(t, b);
+        readBlock(t, b, scene.shapes);
         scene.blocks.push_back(b);
     });
     forEachTable(r, "wall", [&](TableReader& t, std::size_t) {
         model::WallDef w;
         readWall(t, w);
         scene.walls.push_back(w);
+    });
+    forEachTable(r, "spring", [&](TableReader& t, std::size_t) {
+        model::SpringDef sp;
+        readSpring(t, sp);
+        scene.springs.push_back(sp);
     });
     withTable(r, "output", [&](TableReader& t) { readOutput(t, scene.output); });
     r.finish();

@@ -10,7 +10,9 @@
 #include "core/suggest.hpp"
 #include "dem/broad_phase.hpp"
 #include "dem/integrator.hpp"
+#include "geom/polygon.hpp"
 #include "geom/segment.hpp"
+#include "io/shape_checks.hpp"
 
 namespace granulab::io {
 
@@ -108,18 +110,16 @@ void checkStatic(const model::SceneDef& sc, Checker& c, const std::vector<std::s
     for (std::size_t k = 0; k < sc.particles.size(); ++k) {
         const auto& p = sc.particles[k];
         const std::string key = fmt::format("particle[{}]", k);
-        c.oneOf(p.loc, key + ".shape", p.shape, {"disk"});
-        c.positive(p.loc, key + ".radius", p.radius, "m");
-        c.material(p.loc, key + ".material", p.material, names);
+        c.material(p.loc, key + ".material", p.material, names);  // shape and radius: checkShapes()
     }
     for (std::size_t k = 0; k < sc.blocks.size(); ++k) {
         const auto& b = sc.blocks[k];
         const std::string key = fmt::format("block[{}]", k);
-        c.oneOf(b.loc, key + ".shape", b.shape, {"disk"});
+        const bool disks = b.shape == "disk";  // polygon shapes: checkShapes()
         if (!(b.xmax > b.xmin) || !(b.ymax > b.ymin))
             d.error(b.loc, key + ".region", fmt::format("region [{}, {}, {}, {}] must have xmax > xmin and ymax > ymin",
                                                         b.xmin, b.ymin, b.xmax, b.ymax));
-        checkSize(c, b.radius, b.radius.loc.file.empty() ? b.loc : b.radius.loc, key + ".radius");
+        if (disks) checkSize(c, b.radius, b.radius.loc.file.empty() ? b.loc : b.radius.loc, key + ".radius");
         c.material(b.loc, key + ".material", b.material, names);
         c.nonNegative(b.loc, key + ".temperature", b.temperature, "J");
         if (b.lattice == model::BlockDef::Lattice::Random) {
@@ -127,7 +127,7 @@ void checkStatic(const model::SceneDef& sc, Checker& c, const std::vector<std::s
         } else {
             c.positive(b.loc, key + ".spacing", b.spacing, "m");
             const Real dmax = 2 * model::maxRadius(b.radius);
-            if (b.spacing > 0 && dmax > b.spacing)
+            if (disks && b.spacing > 0 && dmax > b.spacing)
                 d.error(b.loc, key + ".spacing",
                         fmt::format("spacing {} m is smaller than the largest diameter {} m: neighbours would overlap", b.spacing, dmax));
             if (b.count < -1 || b.count == 0)
@@ -148,6 +148,17 @@ void checkStatic(const model::SceneDef& sc, Checker& c, const std::vector<std::s
             if (norm2(w.points[(s + 1) % w.points.size()] - w.points[s]) <= 0)
                 d.error(w.loc, key + ".points", fmt::format("points {} and {} coincide (zero-length segment)", s, (s + 1) % w.points.size()));
     }
+    for (std::size_t k = 0; k < sc.springs.size(); ++k) {
+        const auto& sp = sc.springs[k];
+        const std::string key = fmt::format("spring[{}]", k);
+        c.positive(sp.loc, key + ".k", sp.stiffness, "N/m");
+        c.nonNegative(sp.loc, key + ".speed", sp.speed, "m/s");
+        c.nonNegative(sp.loc, key + ".from", sp.from, "s");
+        if (!(sp.to >= sp.from))
+            d.error(sp.loc, key + ".to", fmt::format("to = {} s must be >= from = {} s", sp.to, sp.from));
+        for (Real v : {sp.attach.x, sp.attach.y, sp.pullStart.x, sp.pullStart.y, sp.direction})
+            if (!std::isfinite(v)) d.error(sp.loc, key, "attach, pull_start and direction must be finite numbers");
+    }
     c.nonNegative(sc.output.loc, "output.snapshot_interval", sc.output.snapshotInterval, "s");
     c.nonNegative(sc.output.loc, "output.series_interval", sc.output.seriesInterval, "s");
     c.nonNegative(sc.output.loc, "output.checkpoint_interval", sc.output.checkpointInterval, "s");
@@ -166,17 +177,40 @@ void checkOverlaps(const model::SceneDef& scene, const model::InitialParticles& 
         if (reported == 10) d.error(loc, "particle", "... more overlaps not listed");
         if (reported++ < 10) d.error(loc, "particle", message);
     };
+    // Candidates: pairs whose (circum)circles overlap; polygons are then tested exactly.
+    std::vector<std::vector<Vec2>> corners(init.particles.size());
+    for (std::size_t k = 0; k < init.particles.size(); ++k)
+        if (init.particles[k].shape != model::kDiskShape) corners[k] = worldCorners(init, init.particles[k]);
     std::vector<std::uint64_t> pairs;
     dem::CellGrid grid;
     grid.findPairs(s, 0.0, pairs);
     for (const auto key : pairs) {
         const auto i = dem::keyFirst(key), j = dem::keySecond(key);
-        const Real dist = std::sqrt(norm2(init.particles[i].position - init.particles[j].position));
-        const Real overlap = init.particles[i].radius + init.particles[j].radius - dist;
-        if (overlap <= 1e-12 * (init.particles[i].radius + init.particles[j].radius)) continue;
-        report(init.origins[init.particles[i].origin],
-               fmt::format("particles {} and {} overlap by {:.4g} m at start (the other is defined at {})", i, j, overlap,
-                           init.origins[init.particles[j].origin].str()));
+        const auto& pi = init.particles[i];
+        const auto& pj = init.particles[j];
+        const std::string where = init.origins[pj.origin].str();
+        if (!corners[i].empty() && !corners[j].empty()) {
+            const Real area = geom::convexOverlap(corners[i], corners[j]).area;
+            const Real smaller = std::min(init.shapes.area[pi.shape], init.shapes.area[pj.shape]);
+            if (area <= 1e-9 * smaller) continue;  // touching (rounding slivers) is allowed
+            report(init.origins[pi.origin],
+                   fmt::format("polygon particles {} and {} overlap at start (overlap area {:.4g} m^2, {:.3g} % of the "
+                               "smaller; the other is defined at {})",
+                               i, j, area, 100 * area / smaller, where));
+            continue;
+        }
+        Real overlap = 0, scale = pi.radius + pj.radius;
+        if (corners[i].empty() && corners[j].empty()) {
+            overlap = pi.radius + pj.radius - std::sqrt(norm2(pi.position - pj.position));
+        } else {
+            const bool iDisk = corners[i].empty();
+            const auto& disk = iDisk ? pi : pj;
+            overlap = diskPolygonOverlap(disk.position, disk.radius, corners[iDisk ? j : i]);
+            scale = disk.radius;
+        }
+        if (overlap <= 1e-12 * scale) continue;
+        report(init.origins[pi.origin],
+               fmt::format("particles {} and {} overlap by {:.4g} m at start (the other is defined at {})", i, j, overlap, where));
     }
     model::WallSet walls;
     for (const auto& w : scene.walls) walls.addPolyline(w.name, w.points, w.closed, 0, {});
@@ -185,13 +219,19 @@ void checkOverlaps(const model::SceneDef& scene, const model::InitialParticles& 
         const auto i = dem::keyFirst(key);
         const auto& seg = walls.segments[dem::keySecond(key)];
         const auto& p = init.particles[i];
-        const Vec2 q = seg.a + (seg.b - seg.a) * geom::closestParameter(seg.a, seg.b, p.position);
-        const Real overlap = p.radius - std::sqrt(norm2(p.position - q));
-        if (overlap <= 1e-12 * p.radius) continue;
+        std::string depth;
+        if (corners[i].empty()) {
+            const Vec2 q = seg.a + (seg.b - seg.a) * geom::closestParameter(seg.a, seg.b, p.position);
+            const Real overlap = p.radius - std::sqrt(norm2(p.position - q));
+            if (overlap <= 1e-12 * p.radius) continue;
+            depth = fmt::format(" by {:.4g} m", overlap);
+        } else if (!segmentEntersPolygon(seg.a, seg.b, corners[i])) {
+            continue;
+        }
         report(init.origins[p.origin],
-               fmt::format("particle {} at ({:.6g}, {:.6g}) overlaps wall[{}] by {:.4g} m at start (the wall is defined at {}); "
+               fmt::format("particle {} at ({:.6g}, {:.6g}) overlaps wall[{}]{} at start (the wall is defined at {}); "
                            "block regions bound the particle centres, so keep them a radius away from walls",
-                           i, p.position.x, p.position.y, seg.wall, overlap, scene.walls[seg.wall].loc.str()));
+                           i, p.position.x, p.position.y, seg.wall, depth, scene.walls[seg.wall].loc.str()));
     }
 }
 
@@ -202,8 +242,9 @@ ValidatedScene validate(const model::SceneDef& scene) {
     Checker checker(diags);
     const auto names = dem::materialNames(scene);
     checkStatic(scene, checker, names);
-    const dem::LawTable laws = dem::buildLawTable(scene, diags);
     ValidatedScene out;
+    checkShapes(scene, diags, out.warnings);
+    const dem::LawTable laws = dem::buildLawTable(scene, diags);
     out.initial = model::generateParticles(scene, names, diags);
     if (!diags.empty()) diags.throwIfAny();  // later checks need consistent materials and sizes
 
@@ -214,7 +255,9 @@ ValidatedScene validate(const model::SceneDef& scene) {
     std::vector<bool> usedByWalls(nm, false);
     std::vector<bool> usedByParticles(nm, false);
     for (const auto& p : out.initial.particles) {
-        const Real m = model::particleMass(massModel, scene.materials[p.material].density, p.radius);
+        const Real rho = scene.materials[p.material].density;
+        const Real m = p.shape == model::kDiskShape ? model::particleMass(massModel, rho, p.radius)
+                                                    : rho * out.initial.shapes.area[p.shape];  // areal density
         minMass[p.material] = minMass[p.material] > 0 ? std::min(minMass[p.material], m) : m;
         minRadius[p.material] = minRadius[p.material] > 0 ? std::min(minRadius[p.material], p.radius) : p.radius;
         speed = std::max(speed, norm(p.velocity));
@@ -237,6 +280,14 @@ ValidatedScene validate(const model::SceneDef& scene) {
                 diags.error({scene.path, 0, 0}, "contact",
                             fmt::format("no [[contact]] law for materials {}/{} (add one, or use \"*\")", names[m], names[o]));
         }
+    }
+    for (std::size_t k = 0; k < scene.springs.size(); ++k) {
+        const auto& sp = scene.springs[k];
+        if (sp.particle < 0 || sp.particle >= static_cast<std::int64_t>(out.initial.particles.size()))
+            diags.error(sp.loc, fmt::format("spring[{}].particle", k),
+                        fmt::format("particle id {} does not exist; allowed [0, {}] (generation order: [[particle]]s, "
+                                    "then [[block]]s)",
+                                    sp.particle, static_cast<std::int64_t>(out.initial.particles.size()) - 1));
     }
     checkOverlaps(scene, out.initial, diags);
     diags.throwIfAny();
@@ -263,6 +314,10 @@ ValidatedScene validate(const model::SceneDef& scene) {
                                            "advised dt = {:.4g} s (50 steps)",
                                            dt, out.advice.pair, out.advice.contactTime, out.advice.contactTime / dt,
                                            out.advice.advisedDt));
+    if (out.advice.areaAdvisedDt > 0 && dt > out.advice.areaAdvisedDt)  // gc2d Eq. 2.9
+        out.warnings.push_back(fmt::format("dt = {:.4g} s exceeds the gc2d rule (pi/10) sqrt(m/E) = {:.4g} s of the {} "
+                                           "contact (lightest particle); advised dt <= {:.4g} s",
+                                           dt, out.advice.areaAdvisedDt, out.advice.areaPair, out.advice.areaAdvisedDt));
     diags.throwIfAny();
     return out;
 }

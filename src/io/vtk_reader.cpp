@@ -2,6 +2,8 @@
 // Minimal reader for our own .vtp/.pvd files: the XML header is scanned tag by tag (no XML
 // library), each DataArray's section, Name, type, NumberOfComponents and offset are recorded,
 // and the values are copied out of the raw appended block (UInt64 byte count + data).
+// Particle files: disks are vertex cells read through their point's PointData, polygons are
+// polygon cells read through CellData (layout: io/vtk_writer.hpp).
 #include "io/vtk_reader.hpp"
 
 #include <bit>
@@ -100,7 +102,7 @@ public:
                 a.offset = parseNumber<std::uint64_t>(offset, path, "offset");
                 m_arrays.push_back(std::move(a));
             } else if (name == "FieldData" || name == "PointData" || name == "CellData" ||
-                       name == "Points" || name == "Verts" || name == "Lines") {
+                       name == "Points" || name == "Verts" || name == "Lines" || name == "Polys") {
                 section = std::string(name);
             }
         });
@@ -123,6 +125,12 @@ public:
         std::vector<T> v(bytes / sizeof(T));
         std::memcpy(v.data(), m_text.data() + at + sizeof bytes, bytes);
         return v;
+    }
+
+    bool has(const std::string& section, const std::string& name) const {
+        for (const ArrayInfo& a : m_arrays)
+            if (a.section == section && a.name == name) return true;
+        return false;
     }
 
     [[noreturn]] void fail(const std::string& what) const { throw std::runtime_error(m_path + ": " + what); }
@@ -152,20 +160,69 @@ ParticleFrame readParticlesVtp(const std::string& path) {
     ParticleFrame frame;
     frame.time = readTime(f);
     const auto points = f.read<double>("Points", "Points", "Float64", 3);
-    const std::size_t n = points.size() / 3;
-    frame.x.resize(n);
-    frame.y.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        frame.x[i] = points[3 * i];
-        frame.y[i] = points[3 * i + 1];
-    }
-    frame.radius = f.read<double>("PointData", "radius", "Float64", 1);
-    frame.speed = f.read<double>("PointData", "speed", "Float64", 1);
-    frame.angle = f.read<double>("PointData", "angle", "Float64", 1);
-    frame.id = f.read<std::int64_t>("PointData", "id", "Int64", 1);
-    if (frame.radius.size() != n || frame.speed.size() != n || frame.angle.size() != n ||
-        frame.id.size() != n)
+    const std::size_t nPoints = points.size() / 3;
+    const auto radius = f.read<double>("PointData", "radius", "Float64", 1);
+    const auto speed = f.read<double>("PointData", "speed", "Float64", 1);
+    const auto angle = f.read<double>("PointData", "angle", "Float64", 1);
+    const auto id = f.read<std::int64_t>("PointData", "id", "Int64", 1);
+    if (radius.size() != nPoints || speed.size() != nPoints || angle.size() != nPoints || id.size() != nPoints)
         f.fail("point data arrays differ in length from Points");
+    const auto pointIndex = [&](std::int64_t p) {
+        if (p < 0 || static_cast<std::uint64_t>(p) >= nPoints) f.fail("cell point index out of range");
+        return static_cast<std::size_t>(p);
+    };
+
+    // Disks: one single-point vertex cell each, values from the point data.
+    const auto vertConnectivity = f.read<std::int64_t>("Verts", "connectivity", "Int64", 1);
+    const auto vertOffsets = f.read<std::int64_t>("Verts", "offsets", "Int64", 1);
+    const std::size_t disks = vertOffsets.size();
+    for (std::size_t c = 0; c < disks; ++c) {
+        if (vertOffsets[c] != static_cast<std::int64_t>(c + 1) || c >= vertConnectivity.size())
+            f.fail("vertex cells must hold one point each");
+        const std::size_t p = pointIndex(vertConnectivity[c]);
+        frame.x.push_back(points[3 * p]);
+        frame.y.push_back(points[3 * p + 1]);
+        frame.radius.push_back(radius[p]);
+        frame.speed.push_back(speed[p]);
+        frame.angle.push_back(angle[p]);
+        frame.id.push_back(id[p]);
+        frame.cornerStart.push_back(frame.corners.size());
+    }
+    if (vertConnectivity.size() != disks) f.fail("vertex cells must hold one point each");
+    if (!f.has("Polys", "offsets")) return frame;
+
+    // Polygons: one polygon cell each, values from the cell data (cells: verts, then polys).
+    const auto polyConnectivity = f.read<std::int64_t>("Polys", "connectivity", "Int64", 1);
+    const auto polyOffsets = f.read<std::int64_t>("Polys", "offsets", "Int64", 1);
+    const std::size_t cells = disks + polyOffsets.size();
+    const auto position = f.read<double>("CellData", "position", "Float64", 3);
+    const auto cellRadius = f.read<double>("CellData", "radius", "Float64", 1);
+    const auto cellSpeed = f.read<double>("CellData", "speed", "Float64", 1);
+    const auto cellAngle = f.read<double>("CellData", "angle", "Float64", 1);
+    const auto cellId = f.read<std::int64_t>("CellData", "id", "Int64", 1);
+    if (position.size() != 3 * cells || cellRadius.size() != cells || cellSpeed.size() != cells ||
+        cellAngle.size() != cells || cellId.size() != cells)
+        f.fail("cell data arrays differ in length from the cell count");
+    std::int64_t start = 0;
+    for (std::size_t k = 0; k < polyOffsets.size(); ++k) {
+        const std::int64_t end = polyOffsets[k];
+        if (end - start < 3 || end > static_cast<std::int64_t>(polyConnectivity.size()))
+            f.fail("polygon cells must have at least 3 points");
+        for (std::int64_t q = start; q < end; ++q) {
+            const std::size_t p = pointIndex(polyConnectivity[static_cast<std::size_t>(q)]);
+            frame.corners.push_back({points[3 * p], points[3 * p + 1]});
+        }
+        const std::size_t c = disks + k;
+        frame.x.push_back(position[3 * c]);
+        frame.y.push_back(position[3 * c + 1]);
+        frame.radius.push_back(cellRadius[c]);
+        frame.speed.push_back(cellSpeed[c]);
+        frame.angle.push_back(cellAngle[c]);
+        frame.id.push_back(cellId[c]);
+        frame.cornerStart.push_back(frame.corners.size());
+        start = end;
+    }
+    if (start != static_cast<std::int64_t>(polyConnectivity.size())) f.fail("polygon connectivity has unused entries");
     return frame;
 }
 

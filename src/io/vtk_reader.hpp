@@ -10,11 +10,20 @@
 
 namespace granulab::io {
 
-/// Particle columns of one snapshot, in file order.
+/// Particle columns of one snapshot, in file cell order: the disks (vertex cells), then the
+/// polygons (polygon cells; files written before polygons existed have none).
 struct ParticleFrame {
     double time = 0;                              ///< [s]
-    std::vector<double> x, y, radius, speed, angle;  ///< [m], [m], [m], [m/s], [rad]
+    std::vector<double> x, y, radius, speed, angle;  ///< [m], [m], [m] (polygons: circumradius), [m/s], [rad]
     std::vector<std::int64_t> id;
+    /// Polygon outlines: the world corners (counter-clockwise) of particle i are
+    /// corners[cornerStart[i] .. cornerStart[i + 1]); an empty range is a disk. size() + 1 entries.
+    std::vector<std::size_t> cornerStart{0};
+    std::vector<Vec2> corners;  ///< [m]
+
+    std::size_t size() const noexcept { return x.size(); }
+    std::size_t cornerCount(std::size_t i) const noexcept { return cornerStart[i + 1] - cornerStart[i]; }
+    bool isPolygon(std::size_t i) const noexcept { return cornerCount(i) > 0; }
 };
 
 /// Wall segments of one snapshot.

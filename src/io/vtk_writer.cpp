@@ -68,52 +68,169 @@ private:
     std::string m_blob;
 };
 
-std::string pieceTag(std::size_t points, std::size_t verts, std::size_t lines) {
+std::string pieceTag(std::size_t points, std::size_t verts, std::size_t lines, std::size_t polys = 0) {
     return fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfVerts=\"{}\" NumberOfLines=\"{}\" "
-                       "NumberOfStrips=\"0\" NumberOfPolys=\"0\">",
-                       points, verts, lines);
+                       "NumberOfStrips=\"0\" NumberOfPolys=\"{}\">",
+                       points, verts, lines, polys);
 }
-}  // namespace
 
-void writeParticlesVtp(const std::string& path, const model::ParticleStore& s, double time) {
-    const std::size_t n = s.size();
-    std::vector<double> points(3 * n, 0.0), velocity(3 * n, 0.0), speed(n);
-    std::vector<std::int64_t> id(n), connectivity(n), offsets(n);
-    std::vector<std::int32_t> material(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        points[3 * i] = s.x[i];
-        points[3 * i + 1] = s.y[i];
-        velocity[3 * i] = s.vx[i];
-        velocity[3 * i + 1] = s.vy[i];
-        speed[i] = std::hypot(s.vx[i], s.vy[i]);
-        id[i] = s.id[i];
-        material[i] = static_cast<std::int32_t>(s.material[i]);
-        connectivity[i] = static_cast<std::int64_t>(i);
-        offsets[i] = static_cast<std::int64_t>(i + 1);  // end offset of each cell (VTK XML 1.0)
+/// Per-particle arrays of the particle file, one entry per point or per cell.
+struct ParticleArrays {
+    std::vector<std::int64_t> id;
+    std::vector<double> radius, velocity, speed, omega, angle, mass;
+    std::vector<std::int32_t> material;
+
+    void reserve(std::size_t n) {
+        id.reserve(n);
+        radius.reserve(n);
+        velocity.reserve(3 * n);
+        speed.reserve(n);
+        omega.reserve(n);
+        angle.reserve(n);
+        mass.reserve(n);
+        material.reserve(n);
     }
+
+    /// Appends particle i of `s`, with `radius` given (0 at polygon corners).
+    void add(const model::ParticleStore& s, std::size_t i, double r) {
+        id.push_back(static_cast<std::int64_t>(s.id[i]));
+        radius.push_back(r);
+        velocity.insert(velocity.end(), {s.vx[i], s.vy[i], 0.0});
+        speed.push_back(std::hypot(s.vx[i], s.vy[i]));
+        omega.push_back(s.omega[i]);
+        angle.push_back(s.angle[i]);
+        mass.push_back(s.mass[i]);
+        material.push_back(static_cast<std::int32_t>(s.material[i]));
+    }
+
+    /// The eight arrays, in the order of the disk-only format.
+    void write(VtpBuilder& b, const std::string& in) const {
+        b.array(in, "Int64", "id", 1, id);
+        b.array(in, "Float64", "radius", 1, radius);
+        b.array(in, "Float64", "velocity", 3, velocity);
+        b.array(in, "Float64", "speed", 1, speed);
+        b.array(in, "Float64", "omega", 1, omega);
+        b.array(in, "Float64", "angle", 1, angle);
+        b.array(in, "Float64", "mass", 1, mass);
+        b.array(in, "Int32", "material", 1, material);
+    }
+};
+
+/// Writes the particle file; `shapes` == nullptr treats every particle as a disk.
+void writeParticles(const std::string& path, const model::ParticleStore& s, const model::ShapePool* shapes,
+                    double time) {
+    const std::size_t n = s.size();
+    const auto polygonShape = [&](std::size_t i) -> std::uint32_t {  // kDiskShape for disks
+        if (shapes == nullptr || s.shape.size() != n || s.shape[i] == model::kDiskShape) return model::kDiskShape;
+        if (s.shape[i] >= shapes->size())
+            throw std::invalid_argument(fmt::format("{}: particle {} refers to shape {}, the pool holds {}", path,
+                                                    s.id[i], s.shape[i], shapes->size()));
+        return s.shape[i];
+    };
+    std::size_t disks = 0, polygons = 0, polyPoints = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::uint32_t k = polygonShape(i);
+        if (k == model::kDiskShape) {
+            ++disks;
+        } else {
+            ++polygons;
+            polyPoints += shapes->count[k];
+        }
+    }
+    const std::size_t nPoints = disks + polyPoints;
+    std::vector<double> points;
+    points.reserve(3 * nPoints);
+    ParticleArrays pointData, diskCells, polyCells;
+    pointData.reserve(nPoints);
+    std::vector<std::int64_t> vertConnectivity, vertOffsets, polyConnectivity, polyOffsets;
+    std::vector<double> diskPosition, polyPosition;
+    std::vector<std::int32_t> polyCorners;
+    vertConnectivity.reserve(disks);
+    vertOffsets.reserve(disks);
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::uint32_t k = polygonShape(i);
+        const auto first = static_cast<std::int64_t>(points.size() / 3);
+        if (k == model::kDiskShape) {
+            points.insert(points.end(), {s.x[i], s.y[i], 0.0});
+            pointData.add(s, i, s.radius[i]);
+            vertConnectivity.push_back(first);
+            vertOffsets.push_back(static_cast<std::int64_t>(vertConnectivity.size()));  // end offsets (VTK XML 1.0)
+            if (polygons > 0) {
+                diskCells.add(s, i, s.radius[i]);
+                diskPosition.insert(diskPosition.end(), {s.x[i], s.y[i], 0.0});
+            }
+            continue;
+        }
+        const double cs = std::cos(s.angle[i]), sn = std::sin(s.angle[i]);
+        const std::uint32_t count = shapes->count[k];
+        for (std::uint32_t c = 0; c < count; ++c) {
+            const Vec2 body = shapes->corners[shapes->start[k] + c];
+            points.insert(points.end(), {s.x[i] + (cs * body.x - sn * body.y), s.y[i] + (sn * body.x + cs * body.y), 0.0});
+            pointData.add(s, i, 0.0);
+            polyConnectivity.push_back(first + c);
+        }
+        polyOffsets.push_back(static_cast<std::int64_t>(polyConnectivity.size()));
+        polyCells.add(s, i, s.radius[i]);
+        polyPosition.insert(polyPosition.end(), {s.x[i], s.y[i], 0.0});
+        polyCorners.push_back(static_cast<std::int32_t>(count));
+    }
+
     VtpBuilder b;
     b.timeValue(time);
-    b.line(pieceTag(n, n, 0));
+    b.line(pieceTag(nPoints, disks, 0, polygons));
     const std::string in = "        ";
     b.line("      <PointData Scalars=\"speed\" Vectors=\"velocity\">");
-    b.array(in, "Int64", "id", 1, id);
-    b.array(in, "Float64", "radius", 1, s.radius);
-    b.array(in, "Float64", "velocity", 3, velocity);
-    b.array(in, "Float64", "speed", 1, speed);
-    b.array(in, "Float64", "omega", 1, s.omega);
-    b.array(in, "Float64", "angle", 1, s.angle);
-    b.array(in, "Float64", "mass", 1, s.mass);
-    b.array(in, "Int32", "material", 1, material);
+    pointData.write(b, in);
     b.line("      </PointData>");
+    if (polygons > 0) {  // cell order: verts (disks), then polys
+        const auto join = [](auto a, const auto& tail) {
+            a.insert(a.end(), tail.begin(), tail.end());
+            return a;
+        };
+        ParticleArrays cells;
+        cells.id = join(diskCells.id, polyCells.id);
+        cells.radius = join(diskCells.radius, polyCells.radius);
+        cells.velocity = join(diskCells.velocity, polyCells.velocity);
+        cells.speed = join(diskCells.speed, polyCells.speed);
+        cells.omega = join(diskCells.omega, polyCells.omega);
+        cells.angle = join(diskCells.angle, polyCells.angle);
+        cells.mass = join(diskCells.mass, polyCells.mass);
+        cells.material = join(diskCells.material, polyCells.material);
+        std::vector<std::int32_t> kind(disks, 0), corners(disks, 0);
+        kind.resize(disks + polygons, 1);
+        corners.insert(corners.end(), polyCorners.begin(), polyCorners.end());
+        b.line("      <CellData Scalars=\"speed\" Vectors=\"velocity\">");
+        cells.write(b, in);
+        b.array(in, "Int32", "shape_kind", 1, kind);
+        b.array(in, "Int32", "corners", 1, corners);
+        b.array(in, "Float64", "position", 3, join(diskPosition, polyPosition));
+        b.line("      </CellData>");
+    }
     b.line("      <Points>");
     b.array(in, "Float64", "Points", 3, points);
     b.line("      </Points>");
     b.line("      <Verts>");
-    b.array(in, "Int64", "connectivity", 1, connectivity);
-    b.array(in, "Int64", "offsets", 1, offsets);
+    b.array(in, "Int64", "connectivity", 1, vertConnectivity);
+    b.array(in, "Int64", "offsets", 1, vertOffsets);
     b.line("      </Verts>");
+    if (polygons > 0) {
+        b.line("      <Polys>");
+        b.array(in, "Int64", "connectivity", 1, polyConnectivity);
+        b.array(in, "Int64", "offsets", 1, polyOffsets);
+        b.line("      </Polys>");
+    }
     b.line("    </Piece>");
     b.save(path);
+}
+}  // namespace
+
+void writeParticlesVtp(const std::string& path, const model::ParticleStore& s, const model::ShapePool& shapes,
+                       double time) {
+    writeParticles(path, s, &shapes, time);
+}
+
+void writeParticlesVtp(const std::string& path, const model::ParticleStore& s, double time) {
+    writeParticles(path, s, nullptr, time);
 }
 
 void writeWallsVtp(const std::string& path, const model::WallSet& w, double time) {
@@ -188,16 +305,23 @@ void PvdWriter::truncateAfter(double time) {
     std::erase_if(m_entries, [time](const PvdEntry& e) { return e.time > time; });
 }
 
-void writeSnapshot(const std::string& outDir, int index, const model::ParticleStore& s,
-                   const model::WallSet& w, double time, PvdWriter& pvd) {
+namespace {
+void snapshot(const std::string& outDir, int index, const model::ParticleStore& s, const model::ShapePool* shapes,
+              const model::WallSet& w, double time, PvdWriter& pvd) {
     const std::filesystem::path dir(outDir);
     const std::string particles = snapshotFileName("particles", index);
     const std::string walls = snapshotFileName("walls", index);
-    writeParticlesVtp((dir / particles).string(), s, time);
+    writeParticles((dir / particles).string(), s, shapes, time);
     writeWallsVtp((dir / walls).string(), w, time);
     pvd.add(time, 0, particles);
     pvd.add(time, 1, walls);
     pvd.write();
+}
+}  // namespace
+
+void writeSnapshot(const std::string& outDir, int index, const model::ParticleStore& s,
+                   const model::ShapePool& shapes, const model::WallSet& w, double time, PvdWriter& pvd) {
+    snapshot(outDir, index, s, &shapes, w, time, pvd);
 }
 
 }  // namespace granulab::io

@@ -1,21 +1,48 @@
 // SPDX-License-Identifier: MIT
 // VTK XML output for ParaView (DESIGN.md "io/ writers"): particles and walls as PolyData (.vtp,
 // raw binary appended data) and a .pvd collection that strings the snapshots into a time series.
+//
+// Particle file layout (one piece, part 0 of snapshots.pvd, so ParaView shows disks and polygons
+// together when it opens the .pvd; the layout of disk-only scenes is byte for byte the one from
+// before polygons existed):
+// - Points, in slot order: a disk contributes its centre, a polygon its world corners
+//   (x, y) + R(angle) * body corner, counter-clockwise.
+// - Verts: one vertex cell per disk (its centre point). Polys: one polygon cell per polygon
+//   particle (its corners), present only when the scene has polygons. VTK numbers the cells
+//   verts first, then polys: cell data index = disk rank, or disk count + polygon rank.
+// - PointData (always): id, radius, velocity, speed, omega, angle, mass, material. At a disk
+//   centre these are the disk's values; at a polygon corner they repeat the polygon's values
+//   except radius = 0, so that the Glyph filter (scale array `radius`) draws nothing there and
+//   colouring by a point array (e.g. `speed`) paints each polygon in one colour.
+// - CellData (only when the scene has polygons): id, radius [m] (disk radius / polygon
+//   circumradius), velocity, speed, omega, angle, mass, material, shape_kind (0 = disk or
+//   sphere, 1 = polygon), corners (corner count, 0 for disks), position (centre of mass, 3
+//   components, z = 0), for every cell, disks included.
+// In ParaView the polygons show as filled outlines as soon as the .pvd is opened; for the disks
+// add the Glyph filter as described at writeParticlesVtp.
 #pragma once
 #include <string>
 #include <vector>
 
 #include "io/vtk_reader.hpp"
 #include "model/particle_store.hpp"
+#include "model/shape_pool.hpp"
 #include "model/walls.hpp"
 
 namespace granulab::io {
 
-/// Writes one vertex per particle. Point data: id, radius [m], velocity [m/s] (3 components,
-/// z = 0), speed [m/s], omega [rad/s], angle [rad], mass [kg], material; field data TimeValue [s].
+/// Writes one vertex per disk and one polygon cell per polygon particle (layout: top of this
+/// file). Point data: id, radius [m], velocity [m/s] (3 components, z = 0), speed [m/s], omega
+/// [rad/s], angle [rad], mass [kg], material; field data TimeValue [s].
 /// In ParaView show the disks with the Glyph filter: glyph type Sphere (or 2D Glyph Circle),
 /// scale array `radius`, scale factor 2 (the glyph sources have radius 0.5, so 2 r = diameter).
-/// Creates the parent folder if needed; throws std::runtime_error when the file cannot be written.
+/// `shapes` is the pool the store's `shape` column refers to; a shape index outside it throws
+/// std::invalid_argument. Creates the parent folder if needed; throws std::runtime_error when
+/// the file cannot be written.
+void writeParticlesVtp(const std::string& path, const model::ParticleStore& s,
+                       const model::ShapePool& shapes, double time);
+/// Disk-only form (an empty pool): kept for callers that do not pass the pool yet; any
+/// polygon particle is written as a vertex with its circumradius, like a disk.
 void writeParticlesVtp(const std::string& path, const model::ParticleStore& s, double time);
 
 /// Writes wall segments as Lines cells (points = segment end points a, b of each segment) with
@@ -48,9 +75,9 @@ private:
     std::vector<PvdEntry> m_entries;
 };
 
-/// Convenience for the run command: writes OUTDIR/vtk/particles_NNNNNN.vtp (part 0) and
-/// OUTDIR/vtk/walls_NNNNNN.vtp (part 1), adds both to `pvd` and rewrites it.
+/// Convenience for the run command: writes OUTDIR/vtk/particles_NNNNNN.vtp (part 0, disks and
+/// polygons) and OUTDIR/vtk/walls_NNNNNN.vtp (part 1), adds both to `pvd` and rewrites it.
 void writeSnapshot(const std::string& outDir, int index, const model::ParticleStore& s,
-                   const model::WallSet& w, double time, PvdWriter& pvd);
+                   const model::ShapePool& shapes, const model::WallSet& w, double time, PvdWriter& pvd);
 
 }  // namespace granulab::io

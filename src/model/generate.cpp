@@ -1,14 +1,21 @@
 // SPDX-License-Identifier: MIT
 // Particle generation: lattices, random sequential addition, size distributions, thermal
-// velocities. Every random draw comes from CounterRng(seed, stream = block index).
+// velocities, polygon shapes (gc2d spec section 2.3). Every random draw comes from
+// CounterRng(seed, stream): block positions, radii and temperatures from stream 1000 + block
+// index, polygon shapes and rotations from the separate shape streams below, so adding polygon
+// grains never changes the draws of disk scenes.
 #include "model/generate.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <map>
+#include <numeric>
 #include <unordered_map>
 
 #include "core/rng.hpp"
+#include "geom/polygon.hpp"
+#include "model/grain_shapes.hpp"
 
 namespace granulab::model {
 
@@ -121,6 +128,76 @@ bool placeRandom(const BlockDef& b, std::vector<Real>& radii, CounterRng& rng,
     return true;
 }
 
+/// Shape streams: explicit particle k draws from kParticleShapeStream + k, block b from
+/// kBlockShapeStream + b (far from the block streams 1000 + b).
+constexpr std::uint64_t kParticleShapeStream = 0x7368617065000000ULL;  // "shape"
+constexpr std::uint64_t kBlockShapeStream = kParticleShapeStream + (1ULL << 32);
+
+Vec2 rotated(Vec2 v, Real angle) noexcept {
+    const Real c = std::cos(angle), s = std::sin(angle);
+    return {c * v.x - s * v.y, s * v.x + c * v.y};
+}
+
+/// Makes the polygon shapes of particles: one pool entry per named deterministic shape, made at
+/// its first use and shared by all its particles; one entry per particle for random grains.
+class ShapeMaker {
+public:
+    ShapeMaker(const SceneDef& scene, ShapePool& pool, Diagnostics& diags)
+        : m_scene(scene), m_pool(pool), m_diags(diags) {}
+
+    /// The [[shape]] called `name`, or nullptr ("disk", or unknown: reported by validate()).
+    const ShapeDef* find(const std::string& name) const {
+        for (const auto& s : m_scene.shapes)
+            if (s.name == name) return &s;
+        return nullptr;
+    }
+
+    struct Made {
+        std::uint32_t shape = kDiskShape;  ///< pool index; kDiskShape if the shape is invalid
+        Real angle = 0;                    ///< [rad] initial angle by rotation_mode
+        Vec2 offset;                       ///< [m] centroid relative to the placement point, body frame
+    };
+
+    /// One particle's shape and rotation; draws from `rng` (grains, random rotations).
+    Made make(const ShapeDef& def, CounterRng& rng) {
+        Made m;
+        if (def.kind == "grain") {
+            const Grain g = randomGrain(def, rng);
+            if (!geom::checkConvexPolygon(g.corners).ok()) {
+                if (!m_grainReported) {  // practically impossible; report once per shape set
+                    m_diags.error(def.loc, "shape",
+                                  fmt::format("shape '{}': could not draw a convex grain from semi-axes ({:.4g}, {:.4g}) m; "
+                                              "make the grain less elongated or use fewer corners",
+                                              def.name, g.semiAxes.x, g.semiAxes.y));
+                    m_grainReported = true;
+                }
+                return m;
+            }
+            m.shape = m_pool.add(g.corners);
+            m.offset = geom::polygonMass(g.corners).centroid;
+        } else {
+            const auto it = m_named.find(def.name);
+            if (it != m_named.end()) {
+                m.shape = it->second;
+            } else if (const auto corners = deterministicCorners(def)) {
+                m.shape = m_pool.add(*corners);
+                m_named[def.name] = m.shape;
+            } else {
+                return m;  // invalid parameters, reported by validate()
+            }
+        }
+        m.angle = drawRotation(def, rng);
+        return m;
+    }
+
+private:
+    const SceneDef& m_scene;
+    ShapePool& m_pool;
+    Diagnostics& m_diags;
+    std::map<std::string, std::uint32_t> m_named;
+    bool m_grainReported = false;
+};
+
 /// Random Gaussian velocities with <m v_x^2> = T, zero net momentum, rescaled to exactly T.
 void thermalVelocities(std::vector<InitialParticle>& ps, std::size_t first, Real temperature,
                        const std::vector<Real>& masses, CounterRng& rng) {
@@ -151,6 +228,7 @@ void thermalVelocities(std::vector<InitialParticle>& ps, std::size_t first, Real
 InitialParticles generateParticles(const SceneDef& scene, const std::vector<std::string>& materialNames,
                                    Diagnostics& diags) {
     InitialParticles out;
+    ShapeMaker shapes(scene, out.shapes, diags);
     auto materialOf = [&](const std::string& name) -> std::uint32_t {
         for (std::size_t k = 0; k < materialNames.size(); ++k)
             if (materialNames[k] == name) return static_cast<std::uint32_t>(k);
@@ -161,15 +239,24 @@ InitialParticles generateParticles(const SceneDef& scene, const std::vector<std:
             if (md.name == materialNames[m]) return md.density;
         return 1.0;
     };
-    for (const auto& p : scene.particles) {
+    for (std::size_t k = 0; k < scene.particles.size(); ++k) {
+        const ParticleDef& p = scene.particles[k];
         InitialParticle ip;
-        ip.position = p.position;
+        ip.position = p.position;  // the centroid for polygons
         ip.velocity = p.velocity;
         ip.angle = p.angle;
         ip.omega = p.omega;
         ip.radius = p.radius;
         ip.material = materialOf(p.material);
         ip.origin = static_cast<std::uint32_t>(out.origins.size());
+        if (const ShapeDef* def = shapes.find(p.shape)) {
+            CounterRng rng(scene.run.seed, kParticleShapeStream + k);
+            const auto made = shapes.make(*def, rng);
+            if (made.shape == kDiskShape) continue;  // invalid shape, reported elsewhere
+            ip.shape = made.shape;
+            ip.radius = out.shapes.circumradius[made.shape];
+            ip.angle = made.angle + p.angle;  // the particle's own angle adds to the shape's rotation
+        }
         out.origins.push_back(p.loc);
         out.particles.push_back(ip);
     }
@@ -179,11 +266,35 @@ InitialParticles generateParticles(const SceneDef& scene, const std::vector<std:
         const std::uint32_t origin = static_cast<std::uint32_t>(out.origins.size());
         out.origins.push_back(b.loc);
         const std::uint32_t mat = materialOf(b.material);
+        const ShapeDef* def = shapes.find(b.shape);
+        CounterRng shapeRng(scene.run.seed, kBlockShapeStream + bi);
         std::vector<Vec2> sites;
         std::vector<Real> radii;
+        std::vector<ShapeMaker::Made> made;  // polygon blocks: per particle, in the order of sites
         if (b.lattice == BlockDef::Lattice::Random) {
-            radii.resize(static_cast<std::size_t>(std::max<std::int64_t>(b.count, 0)));
-            for (auto& r : radii) r = drawRadius(b.radius, rng);
+            const auto n = static_cast<std::size_t>(std::max<std::int64_t>(b.count, 0));
+            radii.resize(n);
+            if (def) {
+                // Shapes first; their circumradii are the exclusion radii of the placement, which
+                // places the largest first: sort the shapes the same way (stable, deterministic).
+                made.resize(n);
+                for (std::size_t k = 0; k < n; ++k) {
+                    made[k] = shapes.make(*def, shapeRng);
+                    if (made[k].shape == kDiskShape) break;
+                    radii[k] = out.shapes.circumradius[made[k].shape];
+                }
+                if (n > 0 && made.back().shape == kDiskShape) continue;  // invalid shape
+                std::vector<std::size_t> order(n);
+                std::iota(order.begin(), order.end(), std::size_t{0});
+                std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return radii[x] > radii[y]; });
+                std::vector<ShapeMaker::Made> sorted(n);
+                for (std::size_t k = 0; k < n; ++k) sorted[k] = made[order[k]];
+                made.swap(sorted);
+                for (std::size_t k = 0; k < n; ++k) radii[k] = out.shapes.circumradius[made[k].shape];
+                for (auto& m : made) m.offset = {};  // random placement places the centroid
+            } else {
+                for (auto& r : radii) r = drawRadius(b.radius, rng);
+            }
             std::size_t placed = 0;
             if (!placeRandom(b, radii, rng, out.particles, sites, placed)) {
                 diags.error(b.loc, "block",
@@ -206,7 +317,19 @@ InitialParticles generateParticles(const SceneDef& scene, const std::vector<std:
             }
             sites = latticeSites(b);
             radii.resize(sites.size());
-            for (auto& r : radii) r = drawRadius(b.radius, rng);
+            if (def) {
+                // A grain's ellipse (a deterministic shape's centroid) sits on the lattice site.
+                made.resize(sites.size());
+                bool ok = true;
+                for (std::size_t k = 0; k < sites.size() && ok; ++k) {
+                    made[k] = shapes.make(*def, shapeRng);
+                    ok = made[k].shape != kDiskShape;
+                    if (ok) radii[k] = out.shapes.circumradius[made[k].shape];
+                }
+                if (!ok) continue;
+            } else {
+                for (auto& r : radii) r = drawRadius(b.radius, rng);
+            }
         }
         const std::size_t first = out.particles.size();
         std::vector<Real> masses;
@@ -217,8 +340,15 @@ InitialParticles generateParticles(const SceneDef& scene, const std::vector<std:
             ip.radius = radii[k];
             ip.material = mat;
             ip.origin = origin;
+            if (def) {
+                ip.shape = made[k].shape;
+                ip.angle = made[k].angle;
+                ip.position += rotated(made[k].offset, ip.angle);
+                masses.push_back(densityOf(mat) * out.shapes.area[ip.shape]);
+            } else {
+                masses.push_back(particleMass(massModelOf(scene.dem.massModel), densityOf(mat), radii[k]));
+            }
             out.particles.push_back(ip);
-            masses.push_back(particleMass(massModelOf(scene.dem.massModel), densityOf(mat), radii[k]));
         }
         thermalVelocities(out.particles, first, b.temperature, masses, rng);
     }

@@ -48,6 +48,7 @@ struct BadCase {
 TEST(Cli, BadInputTable) {
     const test::ScratchDir scratch;
     const auto& dir = scratch.path;
+    const std::string kHex = "[[shape]]\nname = \"hex\"\nkind = \"regular\"\ncorner_count = 6\nradius = 0.01\n";
     const BadCase cases[] = {
         {"syntax", "[run\nend_time = 1\n", "", {"bad.toml:1", "syntax error"}},
         {"unknown_key", replace(kGood, "dt = 1e-5", "dtt = 1e-5"), "", {"bad.toml:4", "dem.dtt", "did you mean 'dt'"}},
@@ -76,6 +77,16 @@ TEST(Cli, BadInputTable) {
         {"bool_for_number", replace(kGood, "kn = 1e4", "kn = true"), "", {"contact[0].kn", "expects a number"}},
         {"particle_in_wall", kGood + std::string("[[wall]]\npoints = [[0.005, -1.0], [0.005, 1.0]]\nmaterial = \"g\"\n"), "",
          {"overlaps wall[0]", "bad.toml:11", "wall is defined at bad.toml:19"}},
+        // Polygon shapes (appended from line 19; the hexagon's inradius is 0.00866 m).
+        {"nonconvex_polygon",
+         kGood + std::string("[[shape]]\nname = \"bad\"\nkind = \"polygon\"\ncorners = [[0.0, 0.0], [0.01, 0.0], [0.002, 0.002], [0.0, 0.01]]\n"),
+         "", {"bad.toml:19", "shape[0].corners", "not convex at corner 2"}},
+        {"polygon_radius", kGood + kHex + "[[particle]]\nshape = \"hex\"\nposition = [0.1, 0.0]\nradius = 0.01\nmaterial = \"g\"\n", "",
+         {"bad.toml:27", "particle[2].radius", "radius belongs to disks; the size of shape 'hex' comes from its [[shape]]"}},
+        {"polygon_overlap",
+         kGood + kHex + "[[particle]]\nshape = \"hex\"\nposition = [0.1, 0.0]\nmaterial = \"g\"\n" +
+             "[[particle]]\nshape = \"hex\"\nposition = [0.1, 0.015]\nmaterial = \"g\"\n",
+         "", {"bad.toml:24", "polygon particles 2 and 3 overlap at start", "defined at bad.toml:28"}},
     };
     for (const auto& c : cases) {
         SCOPED_TRACE(c.name);

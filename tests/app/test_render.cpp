@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: MIT
 // `granulab render`: a 3-disk scene with a floor, rendered and inspected pixel by pixel
-// (existence, width, disk colours, white background, y axis pointing up).
+// (existence, width, disk colours, white background, y axis pointing up); a polygon scene
+// (filled true outlines in the speed colour).
+#include <algorithm>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <cairo.h>
 #include <gtest/gtest.h>
@@ -64,7 +67,7 @@ void writeScene(const fs::path& dir) {
         s.add(0, {0.2, 0.2}, {0.0, 0.0}, 0.0, 0.0, kR, 1.0, 1.0, 0);
         s.add(1, {0.5, 0.2}, {2.0, 0.0}, 0.0, 0.0, kR, 1.0, 1.0, 0);
         s.add(2, {0.35, 0.9 - 0.05 * k}, {0.0, -1.0}, 1.0, 0.0, kR, 1.0, 1.0, 0);
-        io::writeSnapshot(dir.string(), k, s, walls, 0.5 * k, pvd);
+        io::writeSnapshot(dir.string(), k, s, model::ShapePool{}, walls, 0.5 * k, pvd);
     }
 }
 
@@ -109,6 +112,111 @@ TEST(Render, DrawsDisksWithYUp) {
     ASSERT_GT(nA, 100);
     EXPECT_LT(sumC / nC, 0.5 * png.height());
     EXPECT_GT(sumA / nA, 0.5 * png.height());
+}
+
+/// Hexagon A at rest, fast hexagon B, slow square C (the speed scale is set by B).
+constexpr const char* kPolygonScene = R"(
+[run]
+end_time = 0.01
+[dem]
+dt = 1.0e-6
+[[material]]
+name = "grain"
+density = 2.0
+[[shape]]
+name = "hex"
+kind = "regular"
+corner_count = 6
+radius = 0.001
+[[shape]]
+name = "square"
+kind = "polygon"
+corners = [[-0.001, -0.001], [0.001, -0.001], [0.001, 0.001], [-0.001, 0.001]]
+[[particle]]
+shape = "hex"
+position = [0.0, 0.0]
+angle = 0.3
+material = "grain"
+[[particle]]
+shape = "hex"
+position = [0.004, 0.0]
+velocity = [0.5, 0.0]
+angle = 1.0
+material = "grain"
+[[particle]]
+shape = "square"
+position = [0.002, 0.003]
+velocity = [0.0, 0.25]
+angle = 0.5
+material = "grain"
+[[contact]]
+materials = ["*", "*"]
+normal = "area"
+E = 1e7
+)";
+
+/// Polygon area [m^2] (shoelace) of world corners.
+double polygonArea(const std::vector<Vec2>& c) {
+    double a2 = 0;
+    for (std::size_t k = 0; k < c.size(); ++k) a2 += cross(c[k], c[(k + 1) % c.size()]);
+    return 0.5 * a2;
+}
+
+TEST(Render, DrawsPolygonsAsFilledOutlines) {
+    const test::ScratchDir scratch;
+    const fs::path& dir = scratch.path;
+    const dem::World world = test::makeWorldFromToml(kPolygonScene);
+    io::PvdWriter pvd((dir / "snapshots.pvd").string());
+    io::writeSnapshot(dir.string(), 0, world.store(), world.shapes(), world.walls(), 0.0, pvd);
+    ASSERT_EQ(renderCommand(dir.string(), 800, true), 0);
+    const Png png(dir / "png" / "frame_000000.png");
+    ASSERT_TRUE(png.ok());
+
+    // The layout the renderer used: the box of all polygon corners (no walls).
+    const io::ParticleFrame f = io::readParticlesVtp((dir / "vtk" / "particles_000000.vtp").string());
+    ASSERT_EQ(f.size(), 3u);
+    Vec2 lo{1e9, 1e9}, hi{-1e9, -1e9};
+    for (const Vec2 c : f.corners) {
+        lo = {std::min(lo.x, c.x), std::min(lo.y, c.y)};
+        hi = {std::max(hi.x, c.x), std::max(hi.y, c.y)};
+    }
+    const RenderLayout L = makeLayout(lo, hi, 800);
+    EXPECT_EQ(png.height(), L.height);
+
+    const auto cornersOf = [&](std::size_t p) {
+        return std::vector<Vec2>(f.corners.begin() + static_cast<std::ptrdiff_t>(f.cornerStart[p]),
+                                 f.corners.begin() + static_cast<std::ptrdiff_t>(f.cornerStart[p + 1]));
+    };
+    const Rgb8 rest = png.at(L.toPixel({f.x[0], f.y[0]}));
+    const Rgb8 fast = png.at(L.toPixel({f.x[1], f.y[1]}));
+    const Rgb8 half = png.at(L.toPixel({f.x[2], f.y[2]}));
+    EXPECT_TRUE(near(rest, {68, 1, 84})) << rest.r << "," << rest.g << "," << rest.b;     // viridis(0)
+    EXPECT_TRUE(near(fast, {253, 231, 37})) << fast.r << "," << fast.g << "," << fast.b;  // viridis(1)
+    EXPECT_TRUE(near(half, {33, 145, 140}, 20)) << half.r << "," << half.g << "," << half.b;  // viridis(.5)
+
+    for (std::size_t p = 0; p < f.size(); ++p) {
+        ASSERT_TRUE(f.isPolygon(p));
+        const std::vector<Vec2> c = cornersOf(p);
+        const Vec2 centre{f.x[p], f.y[p]};
+        // Just outside each edge's midpoint, still inside the circumcircle: white (true outline,
+        // not the bounding circle).
+        for (std::size_t k = 0; k < c.size(); ++k) {
+            const Vec2 mid = (c[k] + c[(k + 1) % c.size()]) * 0.5;
+            const Vec2 out = centre + (mid - centre) * (1.0 + 0.35 * (f.radius[p] / norm(mid - centre) - 1.0));
+            ASSERT_LT(norm(out - centre), f.radius[p]);
+            EXPECT_TRUE(isWhite(png.at(L.toPixel(out)))) << "polygon " << p << " edge " << k;
+        }
+    }
+    // Pixels in the colour of the resting hexagon cover its area, not the circle's (2.6 vs 3.14 R^2).
+    const std::vector<Vec2> hexA = cornersOf(0);
+    const double hexPixels = polygonArea(hexA) * L.scale * L.scale;
+    const double circlePixels = kPi * f.radius[0] * f.radius[0] * L.scale * L.scale;
+    int n = 0;
+    for (int y = L.headerHeight; y < png.height(); ++y)
+        for (int x = 0; x < png.width(); ++x) n += near(png.pixel(x, y), rest, 3);
+    EXPECT_GT(n, 0.85 * hexPixels);
+    EXPECT_LT(n, 1.02 * hexPixels);
+    EXPECT_LT(n, 0.9 * circlePixels);
 }
 
 TEST(Render, MissingFolderReturns2) {

@@ -130,8 +130,8 @@ TEST(Vtk, WriteSnapshotLaysOutFolder) {
     model::WallSet w;
     w.addPolyline("floor", {{0, 0}, {1, 0}}, false, 0, {});
     PvdWriter pvd((dir / "snapshots.pvd").string());
-    writeSnapshot(dir.string(), 0, sampleParticles(), w, 0.0, pvd);
-    writeSnapshot(dir.string(), 1, sampleParticles(), w, 0.25, pvd);
+    writeSnapshot(dir.string(), 0, sampleParticles(), model::ShapePool{}, w, 0.0, pvd);
+    writeSnapshot(dir.string(), 1, sampleParticles(), model::ShapePool{}, w, 0.25, pvd);
     EXPECT_TRUE(fs::exists(dir / "vtk" / "particles_000001.vtp"));
     EXPECT_TRUE(fs::exists(dir / "vtk" / "walls_000001.vtp"));
     const auto entries = readPvd((dir / "snapshots.pvd").string());
