@@ -108,7 +108,7 @@ AreaForce areaLaw(const AreaNormal& nl, const D& dl, const T& tl, const AreaPair
         fn += damp;
     }
     ioAreaOld = g.area;
-    const Real fcoh = nl.cohesion * norm(g.c2 - g.c1);  // Eq. 2.28
+    const Real fcoh = nl.cohesion > 0 ? nl.cohesion * norm(g.c2 - g.c1) : 0.0;  // Eq. 2.28
     const Vec2 n = g.normal, t = perp(n);
     Real fpar = 0;
     if constexpr (std::is_same_v<T, AreaFriction>) {  // Eq. 2.23-2.27, errata 2-4
