@@ -112,11 +112,11 @@ AreaContact chainContact(const PolygonFrame& A, const PolygonFrame& B, int a1, i
     return c;
 }
 
-std::vector<Vec2> worldCorners(const PolygonFrame& p) { return {p.corners, p.corners + p.n}; }
-
-/// Full clipping (rare: deep overlaps, containment, several crossings).
+/// Full clipping (rare: deep overlaps, containment, several crossings, collinear edges), with
+/// per-thread buffers so that it does not allocate once warm.
 AreaContact clipContact(const PolygonFrame& A, const PolygonFrame& B) {
-    const PolygonOverlap o = convexOverlap(worldCorners(A), worldCorners(B));
+    thread_local ClipScratch scratch;
+    const PolygonOverlap o = convexOverlap(A.corners, A.n, B.corners, B.n, scratch);
     AreaContact c;
     c.touching = o.overlapping;
     if (!o.overlapping) return c;
@@ -224,6 +224,11 @@ Walk linCanny(const PolygonFrame& A, const PolygonFrame& B, int& fa, int& fb, st
         const int rb = voronoiStep(B, fb, pa);
         if (rb == 1) continue;
         if (ra == 2 || rb == 2) return Walk::Suspect;
+        // Certify with a strict separating line: an edge feature must have the other closest
+        // point strictly outside its line. (The Euclidean distance to the projected point can be
+        // a round-off 1e-19 when that point lies on the line: aligned faces overlapping.)
+        if (fa & 1) return side(pb, A.corner(fa >> 1), A.corner((fa >> 1) + 1)) < 0 ? Walk::Apart : Walk::Suspect;
+        if (fb & 1) return side(pa, B.corner(fb >> 1), B.corner((fb >> 1) + 1)) < 0 ? Walk::Apart : Walk::Suspect;
         return norm2(pa - pb) > 0 ? Walk::Apart : Walk::Suspect;
     }
     return Walk::Suspect;
@@ -299,10 +304,13 @@ AreaContact coldStart(const PolygonFrame& A, const PolygonFrame& B, FeatureCache
         cache.state = FeatureCache::Apart;
         cache.f[0] = static_cast<std::uint16_t>(fa);
         cache.f[1] = static_cast<std::uint16_t>(fb);
-    } else {
-        cache.state = FeatureCache::Cold;
+        return {};
     }
-    return {};
+    // Touching without a strict crossing: collinear edges (aligned squares face to face) put
+    // the crossings exactly on corners. Clipping handles these; the next step starts cold again.
+    ++stats.fullClips;
+    cache.state = FeatureCache::Cold;
+    return clipContact(A, B);
 }
 
 /// Both crossings near (a1, b1) and (a2, b2); false if either is not found locally.

@@ -58,28 +58,21 @@ ShapeProblem checkConvexPolygon(const std::vector<Vec2>& p) noexcept {
     return {};
 }
 
-namespace {
-struct ClipVertex {
-    Vec2 p;
-    bool crossing;   ///< lies on both boundaries
-    bool edgeOnI;    ///< the edge from this vertex to the next lies on i's boundary
-};
-}  // namespace
-
-PolygonOverlap convexOverlap(const std::vector<Vec2>& pi, const std::vector<Vec2>& pj) {
+PolygonOverlap convexOverlap(const Vec2* pi, int ni, const Vec2* pj, int nj, ClipScratch& sc) {
+    using V = ClipScratch::Vertex;
     PolygonOverlap out;
-    std::vector<ClipVertex> poly, next;
-    poly.reserve(pi.size() + pj.size());
-    for (const auto& v : pi) poly.push_back({v, false, true});
-    const std::size_t nj = pj.size();
-    for (std::size_t e = 0; e < nj && !poly.empty(); ++e) {
+    auto& poly = sc.poly;
+    auto& next = sc.next;
+    poly.clear();
+    for (int k = 0; k < ni; ++k) poly.push_back({pi[k], false, true});
+    for (int e = 0; e < nj && !poly.empty(); ++e) {
         const Vec2 a = pj[e], b = pj[(e + 1) % nj];
         const Vec2 d = b - a;
         const auto side = [&](Vec2 q) { return cross(d, q - a); };  // > 0: inside (left of the edge)
         next.clear();
         for (std::size_t k = 0; k < poly.size(); ++k) {
-            const ClipVertex& P = poly[k];
-            const ClipVertex& Q = poly[(k + 1) % poly.size()];
+            const V& P = poly[k];
+            const V& Q = poly[(k + 1) % poly.size()];
             const Real sp = side(P.p), sq = side(Q.p);
             const bool pin = sp >= 0, qin = sq >= 0;
             if (pin != qin) {
@@ -94,14 +87,15 @@ PolygonOverlap convexOverlap(const std::vector<Vec2>& pi, const std::vector<Vec2
         poly.swap(next);
     }
     if (poly.size() < 3) return out;
-    std::vector<Vec2> corners;
+    auto& corners = sc.corners;
+    corners.clear();
     for (const auto& v : poly) corners.push_back(v.p);
     const PolygonMass m = polygonMass(corners);
     if (!(m.area > 0)) return out;
     out.overlapping = true;
     out.area = m.area;
-    out.polygon = corners;
-    std::vector<Vec2> xs;
+    auto& xs = sc.crossings;
+    xs.clear();
     Vec2 chainI, chainJ;  // mean corners of the i-boundary chain and the j-boundary chain
     int nI = 0, nJ = 0;
     for (std::size_t k = 0; k < poly.size(); ++k) {
@@ -134,10 +128,23 @@ PolygonOverlap convexOverlap(const std::vector<Vec2>& pi, const std::vector<Vec2
     // boundary inside i on i's side: n points from the first towards the second, robust for
     // long rods touching end to end where the centroid line is useless.
     Vec2 towardsI = (nJ ? chainJ / nJ : Vec2{}) - (nI ? chainI / nI : Vec2{});
-    if (nI == 0 || nJ == 0) towardsI = polygonMass(pi).centroid - polygonMass(pj).centroid;
+    if (nI == 0 || nJ == 0) {
+        Vec2 ci, cj;
+        for (int k = 0; k < ni; ++k) ci += pi[k];
+        for (int k = 0; k < nj; ++k) cj += pj[k];
+        towardsI = ci / ni - cj / nj;  // corner means: inside the polygons, enough for a direction
+    }
     Vec2 n = len > 0 ? perp(line) / len : towardsI / std::max(norm(towardsI), 1e-300);
     if (dot(n, towardsI) < 0) n = -n;
     out.normal = n;
+    return out;
+}
+
+PolygonOverlap convexOverlap(const std::vector<Vec2>& pi, const std::vector<Vec2>& pj) {
+    ClipScratch sc;
+    PolygonOverlap out =
+        convexOverlap(pi.data(), static_cast<int>(pi.size()), pj.data(), static_cast<int>(pj.size()), sc);
+    if (out.overlapping) out.polygon = sc.corners;
     return out;
 }
 

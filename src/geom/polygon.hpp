@@ -41,4 +41,18 @@ struct PolygonOverlap {
 };
 PolygonOverlap convexOverlap(const std::vector<Vec2>& i, const std::vector<Vec2>& j);
 
+/// Reusable buffers of the clipping, so that repeated calls do not allocate.
+struct ClipScratch {
+    struct Vertex {
+        Vec2 p;
+        bool crossing;  ///< lies on both boundaries
+        bool edgeOnI;   ///< the edge from this vertex to the next lies on i's boundary
+    };
+    std::vector<Vertex> poly, next;
+    std::vector<Vec2> corners, crossings;
+};
+/// convexOverlap on corner arrays with caller-owned buffers (the overlap polygon is left in
+/// scratch.corners); `polygon` of the result stays empty.
+PolygonOverlap convexOverlap(const Vec2* i, int ni, const Vec2* j, int nj, ClipScratch& scratch);
+
 }  // namespace granulab::geom
