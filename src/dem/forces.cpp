@@ -273,13 +273,13 @@ void areaPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
             c.di = pointVelocity(drift.vx, drift.vy, drift.omega, i, c.ri);
             c.dj = pointVelocity(drift.vx, drift.vy, drift.omega, j, c.rj);
         }
-        c.mi = s.mass[i];
-        c.mj = s.mass[j];
+        c.invMi = s.invMass[i];
+        c.invMj = s.invMass[j];
         c.invIi = s.invInertia[i];
         c.invIj = s.invInertia[j];
         const ContactLaw& law = table[static_cast<std::size_t>(s.material[i]) * nm + s.material[j]];
         const area::AreaForce f = area::areaLaw(*std::get_if<AreaNormal>(&law.normal), *std::get_if<D>(&law.damping),
-                                                *std::get_if<T>(&law.tangential), c, dt, xiHist[p], areaHist[p]);
+                                                *std::get_if<T>(&law.tangential), c, dt, 1.0 / dt, xiHist[p], areaHist[p]);
         s.fx[i] += f.onI.x;
         s.fy[i] += f.onI.y;
         s.fx[j] -= f.onI.x;
@@ -330,11 +330,11 @@ void areaWalls(model::ParticleStore& s, const model::WallSet& walls, ContactList
             c.di = pointVelocity(drift.vx, drift.vy, drift.omega, i, c.ri);
             c.dj = wallVel;
         }
-        c.mi = s.mass[i];
+        c.invMi = s.invMass[i];
         c.invIi = s.invInertia[i];
         const ContactLaw& law = table[static_cast<std::size_t>(s.material[i]) * nm + seg.material];
         const area::AreaForce f = area::areaLaw(*std::get_if<AreaNormal>(&law.normal), *std::get_if<D>(&law.damping),
-                                                *std::get_if<T>(&law.tangential), c, dt, xiHist[p], areaHist[p]);
+                                                *std::get_if<T>(&law.tangential), c, dt, 1.0 / dt, xiHist[p], areaHist[p]);
         s.fx[i] += f.onI.x;
         s.fy[i] += f.onI.y;
         s.torque[i] += cross(c.ri, f.onI);

@@ -70,8 +70,8 @@ struct AreaPair {
     Vec2 vi, vj;             ///< [m/s] contact-point velocities (vj: wall surface velocity)
     Vec2 di, dj;             ///< [m/s] contact-point drift velocities for the spring increment
     bool hasDrift = false;
-    Real mi = 0, mj = 0;     ///< [kg] (mj = inf for walls)
-    Real invIi = 0, invIj = 0;
+    Real invMi = 0, invMj = 0;  ///< [1/kg] (0 for walls)
+    Real invIi = 0, invIj = 0;  ///< [1/(kg m^2)]
     bool wall = false;
 };
 
@@ -81,8 +81,9 @@ struct AreaForce {
 };
 
 /// gc2d Eq. 2.20-2.29 for one contact; updates the spring xi [m] and the old area [m^2].
+/// `invDt` = 1/dt [1/s]; `dt` [s].
 template <class D, class T>
-AreaForce areaLaw(const AreaNormal& nl, const D& dl, const T& tl, const AreaPair& c, Real dt, Real& ioXi,
+AreaForce areaLaw(const AreaNormal& nl, const D& dl, const T& tl, const AreaPair& c, Real dt, Real invDt, Real& ioXi,
                   Real& ioAreaOld) noexcept {
     const auto& g = c.g;
     const Real ri = norm(c.ri);
@@ -101,9 +102,9 @@ AreaForce areaLaw(const AreaNormal& nl, const D& dl, const T& tl, const AreaPair
     out.overlapDepth = hEff;
     Real fn = fel;
     if constexpr (std::is_same_v<D, AreaDamping>) {  // Eq. 2.21/2.22, erratum 1
-        const Real mperp = c.wall ? c.mi : c.mi * c.mj / (c.mi + c.mj);
+        const Real mperp = 1.0 / (c.invMi + c.invMj);  // reduced mass; m_i at a wall
         const Real dA = g.area - ioAreaOld;
-        Real damp = dl.gamma * std::sqrt(nl.E * mperp) * dA * invL / dt;
+        Real damp = dl.gamma * std::sqrt(nl.E * mperp) * dA * invL * invDt;
         if (dA < 0) damp = std::max(damp, -fel);  // separating: never attractive
         fn += damp;
     }
@@ -115,8 +116,7 @@ AreaForce areaLaw(const AreaNormal& nl, const D& dl, const T& tl, const AreaPair
         const Real vpar = dot(c.vi - c.vj, t);
         const Real dpar = c.hasDrift ? dot(c.di - c.dj, t) : 0.0;
         ioXi += dpar * dt;  // S = k_t xi, the spring attached at first touch
-        const Real invMpar = 1.0 / c.mi + (c.wall ? 0.0 : 1.0 / c.mj) + norm2(c.ri) * c.invIi +
-                             (c.wall ? 0.0 : norm2(c.rj) * c.invIj);
+        const Real invMpar = c.invMi + c.invMj + norm2(c.ri) * c.invIi + (c.wall ? 0.0 : norm2(c.rj) * c.invIj);
         const Real spring = tl.kt * ioXi;
         const Real visc = tl.damped ? std::sqrt(tl.kt / invMpar) * vpar : 0.0;
         const Real trial = spring + visc;

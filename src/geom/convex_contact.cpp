@@ -23,8 +23,9 @@ inline int wrap(int k, int n) noexcept { return ((k % n) + n) % n; }
 /// pair with two boundary crossings exactly one (x, y) qualifies.
 struct Entry {
     Vec2 point;
-    Real tx = 0;  ///< parameter of the point along X-edge x
-    Real ty = 0;  ///< parameter along Y-edge y
+    Real tx = 0;                  ///< parameter of the point along X-edge x
+    Real tyNum = 0, tyDen = 1;    ///< parameter along Y-edge y = tyNum / tyDen (rarely needed)
+    Real ty() const noexcept { return tyNum / tyDen; }
 };
 
 inline bool entryAt(const PolygonFrame& X, const PolygonFrame& Y, int x, int y, Entry& e) noexcept {
@@ -39,7 +40,8 @@ inline bool entryAt(const PolygonFrame& X, const PolygonFrame& Y, int x, int y, 
     const Real sy0 = side(y0, x0, x1);
     if (!(sy0 >= 0)) return false;
     e.tx = sx0 / (sx0 - sx1);
-    e.ty = sy0 / (sy0 - sy1);
+    e.tyNum = sy0;
+    e.tyDen = sy0 - sy1;
     e.point = x0 + (x1 - x0) * e.tx;
     return true;
 }
@@ -71,9 +73,9 @@ bool findEntryNear(const PolygonFrame& X, const PolygonFrame& Y, int& x, int& y,
 AreaContact chainContact(const PolygonFrame& A, const PolygonFrame& B, int a1, int b1, const Entry& e1, int a2, int b2,
                          const Entry& e2) noexcept {
     int kA = wrap(a2 - a1, A.n);
-    if (kA == 0 && !(e2.ty > e1.tx)) kA = A.n;  // e2.ty: parameter of the B-entry along A-edge a2
+    if (kA == 0 && !(e2.ty() > e1.tx)) kA = A.n;  // e2.ty(): parameter of the B-entry along A-edge a2
     int kB = wrap(b1 - b2, B.n);
-    if (kB == 0 && !(e1.ty > e2.tx)) kB = B.n;
+    if (kB == 0 && !(e1.ty() > e2.tx)) kB = B.n;
     const Vec2 o = e1.point;  // shoelace relative to c1
     Real area2 = 0;
     Vec2 prev{0, 0};
@@ -130,8 +132,8 @@ AreaContact clipContact(const PolygonFrame& A, const PolygonFrame& B) {
 
 /// True if the overlap found from two crossings may miss further crossings.
 inline bool deepOverlap(const AreaContact& c, const PolygonFrame& A, const PolygonFrame& B) noexcept {
-    const Real rin = std::min(A.inradius, B.inradius);
-    return !(c.area <= 0.25 * rin * norm(c.c2 - c.c1)) || !std::isfinite(c.area);
+    const Real q = 0.25 * std::min(A.inradius, B.inradius);  // area <= q L_c, squared (no sqrt)
+    return !(c.area * c.area <= q * q * norm2(c.c2 - c.c1));
 }
 
 // ------------------------------------------------------------------ 2D Lin-Canny

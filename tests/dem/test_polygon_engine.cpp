@@ -31,8 +31,8 @@ area::AreaPair pairWith(Real area, Real ri, Real rj, Vec2 vi = {}, Vec2 vj = {})
     c.di = vi;
     c.dj = vj;
     c.hasDrift = true;
-    c.mi = 0.02;
-    c.mj = 0.03;
+    c.invMi = 1 / 0.02;
+    c.invMj = 1 / 0.03;
     c.invIi = 1.0 / 1e-8;
     c.invIj = 1.0 / 2e-8;
     return c;
@@ -42,7 +42,7 @@ area::AreaPair pairWith(Real area, Real ri, Real rj, Vec2 vi = {}, Vec2 vj = {})
 TEST(AreaLaw, ElasticForceIsEAOverL) {
     const AreaNormal nl{1e7, 0};
     Real xi = 0, aOld = 0;
-    const auto f = area::areaLaw(nl, NoDamping{}, NoFriction{}, pairWith(2e-9, 1e-3, 3e-3), 1e-6, xi, aOld);
+    const auto f = area::areaLaw(nl, NoDamping{}, NoFriction{}, pairWith(2e-9, 1e-3, 3e-3), 1e-6, 1 / 1e-6, xi, aOld);
     const Real l = 1e-3 * 3e-3 / 4e-3;
     EXPECT_NEAR(f.onI.x, 1e7 * 2e-9 / l, 1e-12);  // Eq. 2.20, along n
     EXPECT_EQ(f.onI.y, 0.0);
@@ -50,7 +50,7 @@ TEST(AreaLaw, ElasticForceIsEAOverL) {
     // Wall: infinite lever arm, l = r_i (spec 3.7).
     auto w = pairWith(2e-9, 1e-3, 0);
     w.wall = true;
-    const auto fw = area::areaLaw(nl, NoDamping{}, NoFriction{}, w, 1e-6, xi, aOld);
+    const auto fw = area::areaLaw(nl, NoDamping{}, NoFriction{}, w, 1e-6, 1 / 1e-6, xi, aOld);
     EXPECT_NEAR(fw.onI.x, 1e7 * 2e-9 / 1e-3, 1e-12);
 }
 
@@ -61,17 +61,17 @@ TEST(AreaLaw, DampingUsesDeltaAreaOverLDtAndNeverAttracts) {
     const Real mperp = 0.02 * 0.03 / 0.05;
     Real xi = 0, aOld = 1e-9;
     // Approaching: A grows by 1e-10 m^2 in one step (erratum 1: divide by l).
-    auto f = area::areaLaw(nl, dl, NoFriction{}, pairWith(1.1e-9, ri, rj), dt, xi, aOld);
+    auto f = area::areaLaw(nl, dl, NoFriction{}, pairWith(1.1e-9, ri, rj), dt, 1 / dt, xi, aOld);
     const Real fel = 1e7 * 1.1e-9 / l;
     EXPECT_NEAR(f.onI.x, fel + 0.5 * std::sqrt(1e7 * mperp) * 1e-10 / (l * dt), 1e-9 * fel);
     // Separating fast: the damping is clipped at -F_el, the total never attractive.
     aOld = 5e-9;
-    f = area::areaLaw(nl, dl, NoFriction{}, pairWith(1e-9, ri, rj), dt, xi, aOld);
+    f = area::areaLaw(nl, dl, NoFriction{}, pairWith(1e-9, ri, rj), dt, 1 / dt, xi, aOld);
     EXPECT_GE(f.onI.x, 0.0);
     EXPECT_NEAR(f.onI.x, 0.0, 1e-12);
     // Separating slowly: not clipped, total reduced but positive.
     aOld = 1.0001e-9;
-    f = area::areaLaw(nl, dl, NoFriction{}, pairWith(1e-9, ri, rj), dt, xi, aOld);
+    f = area::areaLaw(nl, dl, NoFriction{}, pairWith(1e-9, ri, rj), dt, 1 / dt, xi, aOld);
     EXPECT_LT(f.onI.x, 1e7 * 1e-9 / l);
     EXPECT_GT(f.onI.x, 0.0);
 }
@@ -85,7 +85,7 @@ TEST(AreaLaw, CundallStrackSpringViscousTermAndCap) {
     Real xi = 0, aOld = 0;
     // i slides along t = perp(n) = +y relative to j at 1 mm/s: spring and damper oppose it.
     auto c = pairWith(1e-9, ri, rj, {0, 1e-3}, {0, 0});
-    const auto f = area::areaLaw(nl, NoDamping{}, fr, c, dt, xi, aOld);
+    const auto f = area::areaLaw(nl, NoDamping{}, fr, c, dt, 1 / dt, xi, aOld);
     EXPECT_NEAR(xi, 1e-3 * dt, 1e-20);  // Eq. 2.23: S = k_t xi grows by k_t v dt
     const Real invMpar = 1 / 0.02 + 1 / 0.03 + ri * ri / 1e-8 + rj * rj / 2e-8;
     const Real expected = fr.kt * xi + std::sqrt(fr.kt / invMpar) * 1e-3;  // Eq. 2.26
@@ -93,20 +93,20 @@ TEST(AreaLaw, CundallStrackSpringViscousTermAndCap) {
     // Far past the cap: |F_par| = mu F_el and the spring is clipped to the cap (erratum 3).
     const Real fel = 1e7 * 1e-9 * (ri + rj) / (ri * rj);
     xi = 1.0;
-    const auto g = area::areaLaw(nl, NoDamping{}, fr, c, dt, xi, aOld);
+    const auto g = area::areaLaw(nl, NoDamping{}, fr, c, dt, 1 / dt, xi, aOld);
     EXPECT_NEAR(g.onI.y, -0.5 * fel, 1e-12 * fel);
     EXPECT_NEAR(fr.kt * xi, 0.5 * fel, 1e-12 * fel);
     // Rabinowicz: the cap mu (|v|/1 m/s)^(-1/10) F_el exceeds Coulomb's for |v| < 1 m/s.
     fr.rabinowicz = true;
     xi = 1.0;
-    const auto h = area::areaLaw(nl, NoDamping{}, fr, c, dt, xi, aOld);
+    const auto h = area::areaLaw(nl, NoDamping{}, fr, c, dt, 1 / dt, xi, aOld);
     EXPECT_NEAR(h.onI.y, -0.5 * std::pow(1e-3, -0.1) * fel, 1e-12 * fel);
 }
 
 TEST(AreaLaw, CohesionPullsAlongMinusNormalWithContactLength) {
     const AreaNormal nl{1e7, 2e4};
     Real xi = 0, aOld = 0;
-    const auto f = area::areaLaw(nl, NoDamping{}, NoFriction{}, pairWith(1e-12, 1e-3, 1e-3), 1e-6, xi, aOld);
+    const auto f = area::areaLaw(nl, NoDamping{}, NoFriction{}, pairWith(1e-12, 1e-3, 1e-3), 1e-6, 1 / 1e-6, xi, aOld);
     EXPECT_NEAR(f.onI.x, 1e7 * 1e-12 / 0.5e-3 - 2e4 * 1e-3, 1e-12);  // Eq. 2.28: L_c = 1 mm
     EXPECT_LT(f.onI.x, 0.0);  // attractive at this tiny overlap
 }

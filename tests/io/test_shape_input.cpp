@@ -190,9 +190,18 @@ TEST(ShapeInput, ShapeReferencesAndRadii) {
     // Disks still need their radius.
     text = std::string(kBase) + "[[particle]]\nposition = [0.0, 0.0]\nmaterial = \"g\"\n";
     EXPECT_HAS(errorsOf(text), "particle[0].radius: missing: radius in m");
-    // A polygon block's lattice must hold the shape's circumcircle: 2 x 0.05 > 0.09.
-    text = std::string(kBase) + "[[block]]\nshape = \"hex\"\nregion = [0.0, 0.0, 1.0, 1.0]\nspacing = 0.09\nmaterial = \"g\"\n";
-    EXPECT_HAS(errorsOf(text), "block[0].spacing: spacing 0.09 m is smaller than twice the largest circumradius 0.1 m of shape 'hex'");
+    // A lattice of a fixed shape (size and orientation) may be tighter than its circumcircles; the
+    // exact overlap check decides: hexagons with corners on +-x (0.1 m wide, 0.0866 m high) on a
+    // square lattice fit at spacing 0.101 m and overlap at 0.09 m.
+    text = std::string(kBase) + "[[block]]\nshape = \"hex\"\nregion = [0.0, 0.0, 1.0, 1.0]\nspacing = 0.101\nlattice = \"square\"\nmaterial = \"g\"\n";
+    EXPECT_EQ(errorsOf(text).find("overlap"), std::string::npos) << errorsOf(text);
+    text = std::string(kBase) + "[[block]]\nshape = \"hex\"\nregion = [0.0, 0.0, 1.0, 1.0]\nspacing = 0.09\nlattice = \"square\"\nmaterial = \"g\"\n";
+    EXPECT_HAS(errorsOf(text), "polygon particles 0 and 1 overlap at start");
+    // Random rotations need the circumcircle bound: 2 x 0.05 > 0.09.
+    text = std::string(kBase) +
+           "[[shape]]\nname = \"spun\"\nkind = \"regular\"\ncorner_count = 6\nradius = 0.05\nrotation_mode = \"equal\"\n"
+           "[[block]]\nshape = \"spun\"\nregion = [0.0, 0.0, 1.0, 1.0]\nspacing = 0.09\nmaterial = \"g\"\n";
+    EXPECT_HAS(errorsOf(text), "block[0].spacing: spacing 0.09 m is smaller than twice the largest circumradius 0.1 m of shape 'spun'");
 }
 
 TEST(ShapeInput, ShapeKeysAndRanges) {
