@@ -248,6 +248,50 @@ void areaPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
     Real* areaHist = trialHistory ? list.areaOldTrial.data() : list.areaOld.data();
     std::uint64_t contacts = 0;
     Real maxRel = stats.maxRelativeOverlap;
+    const Real invDt = 1.0 / dt;
+    // Two passes over batches of touching pairs: geometry first, then the law. The law's short,
+    // independent iterations let the processor overlap their square roots and divisions; the
+    // forces are still summed in pair order (bit-identical to a single pass).
+    struct Pending {
+        std::uint32_t p, i, j;
+        geom::AreaContact g;
+    };
+    constexpr int kBatch = 32;
+    Pending batch[kBatch];
+    int pending = 0;
+    const auto flush = [&] {
+        for (int b = 0; b < pending; ++b) {
+            const Pending& q = batch[b];
+            const std::uint32_t i = q.i, j = q.j;
+            area::AreaPair c;
+            c.g = q.g;
+            c.ri = c.g.point - Vec2{s.x[i], s.y[i]};
+            c.rj = c.g.point - Vec2{s.x[j], s.y[j]};
+            c.vi = pointVelocity(s.vx.data(), s.vy.data(), s.omega.data(), i, c.ri);
+            c.vj = pointVelocity(s.vx.data(), s.vy.data(), s.omega.data(), j, c.rj);
+            if (drift.vx) {
+                c.hasDrift = true;
+                c.di = pointVelocity(drift.vx, drift.vy, drift.omega, i, c.ri);
+                c.dj = pointVelocity(drift.vx, drift.vy, drift.omega, j, c.rj);
+            }
+            c.invMi = s.invMass[i];
+            c.invMj = s.invMass[j];
+            c.invIi = s.invInertia[i];
+            c.invIj = s.invInertia[j];
+            const ContactLaw& law = table[static_cast<std::size_t>(s.material[i]) * nm + s.material[j]];
+            const area::AreaForce f =
+                area::areaLaw(*std::get_if<AreaNormal>(&law.normal), *std::get_if<D>(&law.damping),
+                              *std::get_if<T>(&law.tangential), c, dt, invDt, xiHist[q.p], areaHist[q.p]);
+            s.fx[i] += f.onI.x;
+            s.fy[i] += f.onI.y;
+            s.fx[j] -= f.onI.x;
+            s.fy[j] -= f.onI.y;
+            s.torque[i] += cross(c.ri, f.onI);
+            s.torque[j] -= cross(c.rj, f.onI);
+            maxRel = std::max(maxRel, f.overlapDepth / std::min(s.radius[i], s.radius[j]));
+        }
+        pending = 0;
+    };
     for (std::uint32_t p = begin; p < end; ++p) {
         const std::uint32_t i = list.first[p], j = list.second[p];
         const Real dx = s.x[j] - s.x[i], dy = s.y[j] - s.y[i], rsum = s.radius[i] + s.radius[j];
@@ -256,38 +300,20 @@ void areaPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
             areaHist[p] = 0;
             continue;
         }
-        area::AreaPair c;
-        c.g = area::pairGeometry(s, sc, i, j, list.features[p]);
-        if (!c.g.touching) {
+        Pending& q = batch[pending];
+        q.g = area::pairGeometry(s, sc, i, j, list.features[p]);
+        if (!q.g.touching) {
             xiHist[p] = 0;
             areaHist[p] = 0;
             continue;
         }
         ++contacts;
-        c.ri = c.g.point - Vec2{s.x[i], s.y[i]};
-        c.rj = c.g.point - Vec2{s.x[j], s.y[j]};
-        c.vi = pointVelocity(s.vx.data(), s.vy.data(), s.omega.data(), i, c.ri);
-        c.vj = pointVelocity(s.vx.data(), s.vy.data(), s.omega.data(), j, c.rj);
-        if (drift.vx) {
-            c.hasDrift = true;
-            c.di = pointVelocity(drift.vx, drift.vy, drift.omega, i, c.ri);
-            c.dj = pointVelocity(drift.vx, drift.vy, drift.omega, j, c.rj);
-        }
-        c.invMi = s.invMass[i];
-        c.invMj = s.invMass[j];
-        c.invIi = s.invInertia[i];
-        c.invIj = s.invInertia[j];
-        const ContactLaw& law = table[static_cast<std::size_t>(s.material[i]) * nm + s.material[j]];
-        const area::AreaForce f = area::areaLaw(*std::get_if<AreaNormal>(&law.normal), *std::get_if<D>(&law.damping),
-                                                *std::get_if<T>(&law.tangential), c, dt, 1.0 / dt, xiHist[p], areaHist[p]);
-        s.fx[i] += f.onI.x;
-        s.fy[i] += f.onI.y;
-        s.fx[j] -= f.onI.x;
-        s.fy[j] -= f.onI.y;
-        s.torque[i] += cross(c.ri, f.onI);
-        s.torque[j] -= cross(c.rj, f.onI);
-        maxRel = std::max(maxRel, f.overlapDepth / std::min(s.radius[i], s.radius[j]));
+        q.p = p;
+        q.i = i;
+        q.j = j;
+        if (++pending == kBatch) flush();
     }
+    flush();
     stats.contacts += contacts;
     stats.maxRelativeOverlap = maxRel;
 }
