@@ -16,7 +16,14 @@ namespace {
 /// > 0: p lies left of the directed line e0 -> e1 (inside for a counter-clockwise edge).
 inline Real side(Vec2 p, Vec2 e0, Vec2 e1) noexcept { return cross(e1 - e0, p - e0); }
 
-inline int wrap(int k, int n) noexcept { return ((k % n) + n) % n; }
+/// k mod n for k in (-2n, 2n) (index differences and +-2 offsets), without an integer division.
+inline int wrap(int k, int n) noexcept {
+    if (k < 0) k += n;
+    if (k < 0) k += n;
+    if (k >= n) k -= n;
+    if (k >= n) k -= n;
+    return k;
+}
 
 /// A crossing where X's boundary enters Y: X-edge x (X[x] outside Y-edge y's line, X[x+1] inside
 /// or on it) crosses Y-edge y (Y[y] inside or on X-edge x's line, Y[y+1] outside). For a convex
