@@ -3,8 +3,9 @@
 // counter-clockwise corners relative to the centroid at angle 0. Particles refer to a shape by
 // index; disks have no entry (kDiskShape). Several particles may share one shape (a named regular
 // polygon), random gc2d grains get one entry each.
-// Thermal size scaling s (spec section 2.4) is a per-particle factor applied in PolygonView; the
-// pool itself never changes after set-up.
+// Thermal size scaling s (spec section 2.4) would be a per-particle factor applied where the world
+// corners are computed (dem::ShapeContext::update, gc2d Eq. 2.35); the pool itself never changes
+// after set-up. s = 1 in every thesis result and here.
 #pragma once
 #include <cstdint>
 #include <vector>
