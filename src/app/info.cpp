@@ -71,9 +71,15 @@ int infoCommand(const std::string& scenePath, const std::vector<io::Override>& o
                    v.advice.areaAdvisedDt, v.advice.areaPair);
     // Estimate: particle store + Verlet half-step velocities (24 B) + neighbour-list reference
     // positions (16 B) + cell grid (12 B) + ~3 candidate pairs per disk (16 B each, history included).
-    const double perDisk = static_cast<double>(model::ParticleStore::kBytesPerParticle) + 24 + 16 + 12 + 3 * 16;
-    fmt::print("memory       ~{:.3g} MB ({:.0f} bytes per disk, estimate; summary.json reports the measured value)\n",
-               perDisk * static_cast<double>(ps.size()) / 1e6, perDisk);
+    double perParticle = static_cast<double>(model::ParticleStore::kBytesPerParticle) + 24 + 16 + 12 + 3 * 16;
+    if (polygons) {  // Gear state (15 more columns), world corners, per-pair area and feature cache
+        std::size_t corners = 0;
+        for (const auto& p : ps)
+            if (p.shape != model::kDiskShape) corners += v.initial.shapes.count[p.shape];
+        perParticle += 15 * 8 + 16.0 * static_cast<double>(corners) / static_cast<double>(ps.size()) + 4 + 3 * 18;
+    }
+    fmt::print("memory       ~{:.3g} MB ({:.0f} bytes per particle, estimate; summary.json reports the measured value)\n",
+               perParticle * static_cast<double>(ps.size()) / 1e6, perParticle);
     for (const auto& w : v.warnings) fmt::print("warning      {}\n", w);
     return 0;
 }
