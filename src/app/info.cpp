@@ -69,6 +69,9 @@ int infoCommand(const std::string& scenePath, const std::vector<io::Override>& o
         fmt::print("area law dt  {:.4g} s by the gc2d rule (pi/10) sqrt(m/E) of the {} contact, lightest particle; "
                    "an upper bound: confirm with a smaller dt\n",
                    v.advice.areaAdvisedDt, v.advice.areaPair);
+    if (v.advice.faceAdvisedDt > 0)
+        fmt::print("face dt      {:.4g} s with the flat-face stiffness E L_max/(r_in/2) of {}: advised for polygons\n",
+                   v.advice.faceAdvisedDt, v.advice.faceParticle);
     // Estimate: particle store + Verlet half-step velocities (24 B) + neighbour-list reference
     // positions (16 B) + cell grid (12 B) + ~3 candidate pairs per disk (16 B each, history included).
     double perParticle = static_cast<double>(model::ParticleStore::kBytesPerParticle) + 24 + 16 + 12 + 3 * 16;

@@ -156,6 +156,33 @@ TimeStepAdvice adviseTimeStep(const LawTable& laws, const std::vector<std::strin
     return advice;
 }
 
+void adviseFaceTimeStep(const LawTable& laws, const model::InitialParticles& initial, const std::vector<Real>& density,
+                        TimeStepAdvice& advice) {
+    const auto n = laws.materialCount();
+    std::vector<Real> stiffest(n, 0);  // largest area-law E [N/m] any contact of material m can have
+    for (std::uint32_t a = 0; a < n; ++a)
+        for (std::uint32_t b = 0; b < n; ++b)
+            if (laws.has(a, b))
+                if (const auto* area = std::get_if<AreaNormal>(&laws.law(a, b).normal))
+                    stiffest[a] = std::max(stiffest[a], area->E);
+    const auto& pool = initial.shapes;
+    for (std::size_t k = 0; k < initial.particles.size(); ++k) {
+        const auto& p = initial.particles[k];
+        if (p.shape == model::kDiskShape || !(stiffest[p.material] > 0) || !(pool.inradius[p.shape] > 0)) continue;
+        const Real m = density[p.material] * pool.area[p.shape];
+        Real edge = 0;  // longest edge [m]: the longest possible face contact
+        const auto first = pool.start[p.shape], count = pool.count[p.shape];
+        for (std::uint32_t c = 0; c < count; ++c)
+            edge = std::max(edge, norm(pool.corners[first + (c + 1) % count] - pool.corners[first + c]));
+        const Real ratio = std::max<Real>(1, 2 * edge / pool.inradius[p.shape]);  // round grains: the gc2d rule
+        const Real dt = kPi / 10.0 * std::sqrt(m / (stiffest[p.material] * ratio));
+        if (advice.faceAdvisedDt == 0 || dt < advice.faceAdvisedDt) {
+            advice.faceAdvisedDt = dt;
+            advice.faceParticle = fmt::format("particle {} (k_face = {:.3g} E)", k, ratio);
+        }
+    }
+}
+
 bool hasPolygons(const model::SceneDef& scene) noexcept {
     for (const auto& p : scene.particles)
         if (p.shape != "disk") return true;

@@ -28,6 +28,8 @@ struct TimeStepAdvice {
     std::string pair;         ///< which contact sets the limit, e.g. "grain-grain"
     Real areaAdvisedDt = 0;   ///< [s] gc2d rule (pi/10) sqrt(m_min/E) of the area-law contacts (0: none)
     std::string areaPair;     ///< which area-law contact sets it
+    Real faceAdvisedDt = 0;   ///< [s] (pi/10) sqrt(m/k_face) with the flat-face stiffness of polygons (0: none)
+    std::string faceParticle; ///< which particle sets it
 };
 
 /// `usedByWalls[m]` tells which materials walls use; `minMass[m]` [kg] and `minRadius[m]` [m] are
@@ -42,6 +44,14 @@ bool hasPolygons(const model::SceneDef& scene) noexcept;
 /// polygons, the gc2d defaults; verlet and cell_grid otherwise).
 std::string integratorOf(const model::SceneDef& scene);
 std::string broadPhaseOf(const model::SceneDef& scene);
+
+/// The gc2d rule assumes round grains; a flat face of length L at lever arm l is stiffer,
+/// k = E L / l (two squares face to face: 4 E). Bounds it by k_face = max(E, 2 E L_max / r_in)
+/// (L_max the longest edge, l >= r_in / 2 between two grains, r_in the inradius) for every
+/// polygon particle and fills advice.faceAdvisedDt with the smallest (pi/10) sqrt(m / k_face).
+/// `density` by material index.
+void adviseFaceTimeStep(const LawTable& laws, const model::InitialParticles& initial, const std::vector<Real>& density,
+                        TimeStepAdvice& advice);
 
 /// Translates the scene's damping windows etc. into the engine configuration.
 WorldConfig makeWorldConfig(const model::SceneDef& scene, Real maxRadius);

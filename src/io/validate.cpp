@@ -314,10 +314,18 @@ ValidatedScene validate(const model::SceneDef& scene) {
                                            "advised dt = {:.4g} s (50 steps)",
                                            dt, out.advice.pair, out.advice.contactTime, out.advice.contactTime / dt,
                                            out.advice.advisedDt));
+    std::vector<Real> density(nm, 0);
+    for (std::size_t m = 0; m < scene.materials.size(); ++m) density[m] = scene.materials[m].density;
+    dem::adviseFaceTimeStep(laws, out.initial, density, out.advice);
     if (out.advice.areaAdvisedDt > 0 && dt > out.advice.areaAdvisedDt)  // gc2d Eq. 2.9
         out.warnings.push_back(fmt::format("dt = {:.4g} s exceeds the gc2d rule (pi/10) sqrt(m/E) = {:.4g} s of the {} "
                                            "contact (lightest particle); advised dt <= {:.4g} s",
-                                           dt, out.advice.areaAdvisedDt, out.advice.areaPair, out.advice.areaAdvisedDt));
+                                           dt, out.advice.areaAdvisedDt, out.advice.areaPair, out.advice.faceAdvisedDt));
+    else if (out.advice.faceAdvisedDt > 0 && dt > out.advice.faceAdvisedDt)
+        out.warnings.push_back(fmt::format(
+            "dt = {:.4g} s is within the gc2d rule but above (pi/10) sqrt(m/k_face) = {:.4g} s for flat faces of {} "
+            "(face stiffness E L_max / (r_in / 2)); flat contacts may rattle or bounce: advised dt <= {:.4g} s",
+            dt, out.advice.faceAdvisedDt, out.advice.faceParticle, out.advice.faceAdvisedDt));
     diags.throwIfAny();
     return out;
 }

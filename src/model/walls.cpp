@@ -33,12 +33,16 @@ void WallSet::addPolyline(const std::string& name, const std::vector<Vec2>& poin
         segments.push_back(s);
     }
     wall.segmentCount = static_cast<std::uint32_t>(segCount);
+    if (velocity.x != 0 || velocity.y != 0) {
+        m_moving.push_back(static_cast<std::uint32_t>(walls.size()));
+        m_maxSpeed = std::max(m_maxSpeed, norm(velocity));
+    }
     walls.push_back(wall);
 }
 
 void WallSet::setTime(Real t) noexcept {
-    for (const auto& w : walls) {
-        if (w.velocity.x == 0 && w.velocity.y == 0) continue;
+    for (const std::uint32_t index : m_moving) {
+        const Wall& w = walls[index];
         const Vec2 d = w.velocity * t;
         for (std::uint32_t k = 0; k < w.segmentCount; ++k) {
             auto& s = segments[w.firstSegment + k];
@@ -46,12 +50,6 @@ void WallSet::setTime(Real t) noexcept {
             s.b = s.b0 + d;
         }
     }
-}
-
-Real WallSet::maxSpeed() const noexcept {
-    Real m = 0;
-    for (const auto& w : walls) m = std::max(m, norm(w.velocity));
-    return m;
 }
 
 }  // namespace granulab::model

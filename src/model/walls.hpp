@@ -36,8 +36,12 @@ struct WallSet {
                      std::uint32_t material, Vec2 velocity);
     /// Places every wall at its prescribed position for time t [s] (x = x0 + v t, no drift).
     void setTime(Real t) noexcept;
-    /// Largest speed [m/s] of any wall.
-    Real maxSpeed() const noexcept;
+    /// Largest speed [m/s] of any wall (kept by addPolyline: constant during a run).
+    Real maxSpeed() const noexcept { return m_maxSpeed; }
+
+private:
+    std::vector<std::uint32_t> m_moving;  ///< walls with a non-zero velocity (setTime moves only these)
+    Real m_maxSpeed = 0;                  ///< [m/s]
 };
 
 }  // namespace granulab::model
