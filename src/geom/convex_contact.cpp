@@ -59,6 +59,14 @@ constexpr int kOffsets[][2] = {{1, 0},  {-1, 0}, {0, 1},  {0, -1}, {1, 1},   {-1
                                {2, 0},  {-2, 0}, {0, 2},  {0, -2}, {2, 1},   {1, 2},   {-2, -1}, {-1, -2},
                                {2, -1}, {-1, 2}, {-2, 1}, {1, -2}, {2, 2},   {-2, -2}, {2, -2}, {-2, 2}};
 
+inline void storeCrossings(FeatureCache& cache, int a1, int b1, int a2, int b2) noexcept {
+    cache.state = FeatureCache::Crossing;
+    cache.f[0] = static_cast<std::uint16_t>(a1);
+    cache.f[1] = static_cast<std::uint16_t>(b1);
+    cache.f[2] = static_cast<std::uint16_t>(a2);
+    cache.f[3] = static_cast<std::uint16_t>(b2);
+}
+
 /// Searches the entry at and around the cached (x, y).
 bool findEntryNear(const PolygonFrame& X, const PolygonFrame& Y, int& x, int& y, Entry& e,
                    std::uint64_t& iterations) noexcept {
@@ -284,11 +292,7 @@ AreaContact coldStart(const PolygonFrame& A, const PolygonFrame& B, FeatureCache
     if (found == 1) {
         AreaContact c = chainContact(A, B, a1, b1, e1, a2, b2, e2);
         if (!deepOverlap(c, A, B)) {
-            cache.state = FeatureCache::Crossing;
-            cache.f[0] = static_cast<std::uint16_t>(a1);
-            cache.f[1] = static_cast<std::uint16_t>(b1);
-            cache.f[2] = static_cast<std::uint16_t>(a2);
-            cache.f[3] = static_cast<std::uint16_t>(b2);
+            storeCrossings(cache, a1, b1, a2, b2);
             return c;
         }
     }
@@ -343,10 +347,7 @@ AreaContact trackPolygonContact(const PolygonFrame& A, const PolygonFrame& B, Fe
         int a1 = idx(cache.f[0], A.n), b1 = idx(cache.f[1], B.n), a2 = idx(cache.f[2], A.n), b2 = idx(cache.f[3], B.n);
         AreaContact c;
         if (trackCrossings(A, B, a1, b1, a2, b2, c, stats)) {
-            cache.f[0] = static_cast<std::uint16_t>(a1);
-            cache.f[1] = static_cast<std::uint16_t>(b1);
-            cache.f[2] = static_cast<std::uint16_t>(a2);
-            cache.f[3] = static_cast<std::uint16_t>(b2);
+            storeCrossings(cache, a1, b1, a2, b2);
             return c;
         }
         // Probably separated: walk from the edges of the last crossing.
@@ -370,11 +371,7 @@ AreaContact trackPolygonContact(const PolygonFrame& A, const PolygonFrame& B, Fe
         int a1 = fa >> 1, b1 = fb >> 1, a2 = fa >> 1, b2 = fb >> 1;
         AreaContact c;
         if (trackCrossings(A, B, a1, b1, a2, b2, c, stats)) {
-            cache.state = FeatureCache::Crossing;
-            cache.f[0] = static_cast<std::uint16_t>(a1);
-            cache.f[1] = static_cast<std::uint16_t>(b1);
-            cache.f[2] = static_cast<std::uint16_t>(a2);
-            cache.f[3] = static_cast<std::uint16_t>(b2);
+            storeCrossings(cache, a1, b1, a2, b2);
             return c;
         }
     }
