@@ -288,7 +288,8 @@ void areaPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
             s.fy[j] -= f.onI.y;
             s.torque[i] += cross(c.ri, f.onI);
             s.torque[j] -= cross(c.rj, f.onI);
-            maxRel = std::max(maxRel, f.overlapDepth / std::min(s.radius[i], s.radius[j]));
+            const Real rMin = std::min(s.radius[i], s.radius[j]);
+            if (f.overlapDepth > maxRel * rMin) maxRel = f.overlapDepth / rMin;  // divide only for a new maximum
         }
         pending = 0;
     };
