@@ -52,6 +52,10 @@ std::string describe(const geom::ShapeProblem& p, std::size_t n) {
 
 void checkPolygonCorners(const model::ShapeDef& s, const std::string& key, Diagnostics& d,
                          std::vector<std::string>& warnings) {
+    if (s.corners.size() > static_cast<std::size_t>(model::kMaxShapeCorners)) {  // feature caches hold 16-bit indices
+        d.error(s.loc, key, fmt::format("{} corners; allowed [3, {}]", s.corners.size(), model::kMaxShapeCorners));
+        return;
+    }
     geom::ShapeProblem p = geom::checkConvexPolygon(s.corners);
     if (p.what == "clockwise") {
         std::vector<Vec2> ccw(s.corners.rbegin(), s.corners.rend());
