@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: MIT
+// Event queues of the event-driven engine (edmd spec section 2.3): one future event per
+// particle, keyed by its time; the key of a particle is replaced (never removed) when its event
+// changes, stale events are recognised by the caller when they reach the top. Ties are broken
+// by the smaller particle index, so the event order is deterministic.
+// Two implementations behind one interface (no virtual calls; the engine is a template on the
+// queue type):
+//  * AddressableHeap: implicit binary heap with heap_pos[particle] (the thesis' queue).
+//  * TournamentTree: complete binary tree over the N particles (Marin, Risso & Cordero 1993),
+//    each inner node holding the earlier of its two children; replace walks one leaf-to-root
+//    path with no data-dependent branches on the way up.
+#pragma once
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "core/types.hpp"
+
+namespace granulab::edmd {
+
+/// An event time t [s] of particle i; (t, i) order.
+inline bool earlier(Real ta, std::uint32_t a, Real tb, std::uint32_t b) noexcept {
+    return ta < tb || (ta == tb && a < b);
+}
+
+class AddressableHeap {
+public:
+    /// n particles, every time +infinity.
+    void reset(std::uint32_t n);
+    /// Sets the event time of particle i [s] (decrease or increase key). O(log n).
+    void set(std::uint32_t i, Real t) noexcept;
+    /// Particle with the earliest event (ties: smallest index). O(1).
+    std::uint32_t top() const noexcept { return m_heap[0]; }
+    Real topTime() const noexcept { return m_time[m_heap[0]]; }
+    Real time(std::uint32_t i) const noexcept { return m_time[i]; }
+    std::uint32_t size() const noexcept { return static_cast<std::uint32_t>(m_time.size()); }
+    std::size_t memoryBytes() const noexcept {
+        return m_time.capacity() * sizeof(Real) + (m_heap.capacity() + m_pos.capacity()) * 4;
+    }
+
+private:
+    bool before(std::uint32_t a, std::uint32_t b) const noexcept { return earlier(m_time[a], a, m_time[b], b); }
+    void place(std::uint32_t slot, std::uint32_t particle) noexcept {
+        m_heap[slot] = particle;
+        m_pos[particle] = slot;
+    }
+    std::vector<Real> m_time;           ///< [s] event time per particle
+    std::vector<std::uint32_t> m_heap;  ///< particles in heap order
+    std::vector<std::uint32_t> m_pos;   ///< heap slot of each particle
+};
+
+class TournamentTree {
+public:
+    void reset(std::uint32_t n);
+    void set(std::uint32_t i, Real t) noexcept;
+    std::uint32_t top() const noexcept { return m_node[1]; }
+    Real topTime() const noexcept { return m_time[m_node[1]]; }
+    Real time(std::uint32_t i) const noexcept { return m_time[i]; }
+    std::uint32_t size() const noexcept { return m_n; }
+    std::size_t memoryBytes() const noexcept { return m_time.capacity() * sizeof(Real) + m_node.capacity() * 4; }
+
+private:
+    std::uint32_t m_n = 0, m_leaves = 1;  ///< particles; leaves (power of two >= n)
+    std::vector<Real> m_time;             ///< [s] per particle, padded leaves at +infinity
+    std::vector<std::uint32_t> m_node;    ///< 1-based tree: node k holds the winner of 2k, 2k+1
+};
+
+}  // namespace granulab::edmd

@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: MIT
+// Event queues of the event-driven engine (edmd spec section 2.3): every queue agrees with a
+// sorted reference on random event streams, including equal times (ties by particle index),
+// +infinity and replacements by earlier and later times.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <set>
+#include <utility>
+
+#include "core/rng.hpp"
+#include "edmd/event_queue.hpp"
+
+using namespace granulab;
+
+namespace {
+template <class Queue>
+void agreesWithSortedReference(std::uint32_t n, std::uint64_t seed, int operations) {
+    Queue q;
+    q.reset(n);
+    const Real inf = std::numeric_limits<Real>::infinity();
+    std::set<std::pair<Real, std::uint32_t>> ref;
+    std::vector<Real> time(n, inf);
+    for (std::uint32_t i = 0; i < n; ++i) ref.insert({inf, i});
+    CounterRng rng(seed, 0);
+    Real now = 0;
+    for (int op = 0; op < operations; ++op) {
+        // Like the engine: pop the earliest, give it (and maybe a partner) a later event; now and
+        // then move an arbitrary particle earlier or to +infinity; times on a coarse grid so
+        // that ties occur.
+        std::uint32_t i;
+        Real t;
+        const Real u = rng.uniform();
+        if (u < 0.6) {
+            i = q.top();
+            now = q.topTime() < inf ? q.topTime() : now;
+            t = now + std::floor(rng.uniform() * 50) * 0.125;
+        } else if (u < 0.95) {
+            i = static_cast<std::uint32_t>(rng.uniform() * n);
+            t = now + std::floor(rng.uniform() * 50) * 0.125;
+        } else {
+            i = static_cast<std::uint32_t>(rng.uniform() * n);
+            t = inf;
+        }
+        ref.erase({time[i], i});
+        time[i] = t;
+        ref.insert({t, i});
+        q.set(i, t);
+        ASSERT_EQ(q.top(), ref.begin()->second) << "operation " << op;
+        ASSERT_EQ(q.topTime(), ref.begin()->first) << "operation " << op;
+        ASSERT_EQ(q.time(i), t);
+    }
+}
+}  // namespace
+
+TEST(EventQueue, AddressableHeapAgreesWithSortedReference) {
+    for (std::uint32_t n : {1u, 2u, 3u, 7u, 64u, 1000u}) agreesWithSortedReference<edmd::AddressableHeap>(n, n, 20000);
+}
+
+TEST(EventQueue, TournamentTreeAgreesWithSortedReference) {
+    for (std::uint32_t n : {1u, 2u, 3u, 7u, 64u, 1000u}) agreesWithSortedReference<edmd::TournamentTree>(n, n, 20000);
+}
+
+TEST(EventQueue, TiesGoToTheSmallerIndex) {
+    edmd::AddressableHeap h;
+    edmd::TournamentTree t;
+    h.reset(5);
+    t.reset(5);
+    for (std::uint32_t i : {4u, 2u, 3u}) {
+        h.set(i, 1.0);
+        t.set(i, 1.0);
+    }
+    EXPECT_EQ(h.top(), 2u);
+    EXPECT_EQ(t.top(), 2u);
+}
