@@ -2,6 +2,9 @@
 // Event queues (edmd spec section 2.3): addressable binary heap and tournament tree.
 #include "edmd/event_queue.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 namespace granulab::edmd {
 
 namespace {
@@ -60,6 +63,121 @@ void TournamentTree::set(std::uint32_t i, Real t) noexcept {
         const std::uint32_t a = m_node[2 * k], b = m_node[2 * k + 1];
         m_node[k] = earlier(m_time[b], b, m_time[a], a) ? b : a;
     }
+}
+
+// ---------------------------------------------------------------- calendar queue
+
+std::uint32_t CalendarQueue::binOf(Real t) const noexcept {
+    const Real x = (t - m_start) * m_invWidth;  // +inf and beyond-window times go to the overflow
+    if (!(x < static_cast<Real>(m_bins))) return m_bins;
+    if (!(x >= static_cast<Real>(m_current))) return m_current;  // earlier than the current bin: scan it there
+    return static_cast<std::uint32_t>(x);
+}
+
+void CalendarQueue::link(std::uint32_t i, std::uint32_t bin) noexcept {
+    m_bin[i] = bin;
+    m_prev[i] = kNone;
+    m_next[i] = m_head[bin];
+    if (m_head[bin] != kNone) m_prev[m_head[bin]] = i;
+    m_head[bin] = i;
+}
+
+void CalendarQueue::unlink(std::uint32_t i) noexcept {
+    const std::uint32_t b = m_bin[i];
+    if (m_prev[i] != kNone) m_next[m_prev[i]] = m_next[i];
+    else m_head[b] = m_next[i];
+    if (m_next[i] != kNone) m_prev[m_next[i]] = m_prev[i];
+}
+
+void CalendarQueue::reset(std::uint32_t n) {
+    m_time.assign(n, kNever);
+    m_next.assign(n, kNone);
+    m_prev.assign(n, kNone);
+    m_bin.assign(n, 0);
+    m_bins = std::max<std::uint32_t>(n, 1);
+    m_head.assign(m_bins + 1, kNone);
+    m_current = 0;
+    m_start = 0;
+    m_width = m_invWidth = 1;
+    m_rebuilds = 0;
+    for (std::uint32_t i = n; i-- > 0;) link(i, m_bins);  // all in the overflow
+    m_top = 0;
+    if (n) settle();
+}
+
+void CalendarQueue::rebuild() noexcept {
+    ++m_rebuilds;
+    // New window from the pending (finite) times: starts at the earliest, bin width such that
+    // the window spans twice the mean distance of the events from the earliest one.
+    Real tmin = kNever, sum = 0;
+    std::uint32_t finite = 0;
+    for (std::uint32_t i = m_head[m_bins]; i != kNone; i = m_next[i])
+        if (m_time[i] < kNever) {
+            tmin = std::min(tmin, m_time[i]);
+            sum += m_time[i];
+            ++finite;
+        }
+    if (finite == 0) return;  // only +infinity pending: everything stays in the overflow
+    const Real span = 2 * (sum / finite - tmin);
+    m_start = tmin;
+    m_width = span > 0 ? span / m_bins : 1;
+    if (!(m_width > 0) || !(tmin + m_width > tmin)) m_width = std::max<Real>(1, std::abs(tmin)) * 1e-12;
+    m_invWidth = 1 / m_width;
+    m_current = 0;
+    std::uint32_t i = m_head[m_bins];
+    m_head[m_bins] = kNone;
+    while (i != kNone) {
+        const std::uint32_t next = m_next[i];
+        link(i, binOf(m_time[i]));
+        i = next;
+    }
+}
+
+void CalendarQueue::rebuildAll() noexcept {
+    for (std::uint32_t b = 0; b < m_bins; ++b) {
+        std::uint32_t i = m_head[b];
+        m_head[b] = kNone;
+        while (i != kNone) {
+            const std::uint32_t next = m_next[i];
+            link(i, m_bins);
+            i = next;
+        }
+    }
+    m_current = m_bins;
+    m_setsSinceRebuild = 0;
+}
+
+void CalendarQueue::settle() noexcept {
+    for (;;) {
+        while (m_current < m_bins && m_head[m_current] == kNone) ++m_current;
+        if (m_current < m_bins) break;
+        const std::uint32_t before = m_head[m_bins];
+        rebuild();
+        if (m_head[m_bins] == before && m_current >= m_bins) break;  // only +infinity left
+        if (m_current >= m_bins) break;
+    }
+    const std::uint32_t bin = m_current < m_bins ? m_current : m_bins;
+    std::uint32_t best = m_head[bin];
+    std::uint32_t scanned = 0;
+    for (std::uint32_t i = m_next[best]; i != kNone; i = m_next[i]) {
+        ++scanned;
+        if (earlier(m_time[i], i, m_time[best], best)) best = i;
+    }
+    m_top = best;
+    constexpr std::uint32_t kLongBin = 64;
+    if (scanned > kLongBin && bin < m_bins && m_setsSinceRebuild > m_bins) {
+        rebuildAll();  // re-tune the width from all pending times, then find the top again
+        settle();
+    }
+}
+
+void CalendarQueue::set(std::uint32_t i, Real t) noexcept {
+    ++m_setsSinceRebuild;
+    unlink(i);
+    m_time[i] = t;
+    link(i, binOf(t));
+    // The earliest event changes only if i was it or i now beats it.
+    if (i == m_top || earlier(t, i, m_time[m_top], m_top) || m_bin[m_top] != m_current) settle();
 }
 
 }  // namespace granulab::edmd

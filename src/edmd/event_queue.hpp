@@ -9,6 +9,12 @@
 //  * TournamentTree: complete binary tree over the N particles (Marin, Risso & Cordero 1993),
 //    each inner node holding the earlier of its two children; replace walks one leaf-to-root
 //    path with no data-dependent branches on the way up.
+//  * CalendarQueue: O(1) amortised, in the style of Paul (J. Comput. Phys. 221, 2007): a window
+//    of B bins of width w in doubly linked lists, an overflow list beyond the window, and the
+//    earliest event found by a scan of the current bin (a few events). When the window is used
+//    up it is rebuilt from the overflow with w = span / B from the pending event times; when the
+//    current bin grows long (more than 64 events) everything is re-binned, at most once per B
+//    updates, so the cost stays O(1) amortised.
 #pragma once
 #include <cstdint>
 #include <limits>
@@ -63,6 +69,44 @@ private:
     std::uint32_t m_n = 0, m_leaves = 1;  ///< particles; leaves (power of two >= n)
     std::vector<Real> m_time;             ///< [s] per particle, padded leaves at +infinity
     std::vector<std::uint32_t> m_node;    ///< 1-based tree: node k holds the winner of 2k, 2k+1
+};
+
+class CalendarQueue {
+public:
+    void reset(std::uint32_t n);
+    void set(std::uint32_t i, Real t) noexcept;
+    std::uint32_t top() const noexcept { return m_top; }
+    Real topTime() const noexcept { return m_time[m_top]; }
+    Real time(std::uint32_t i) const noexcept { return m_time[i]; }
+    std::uint32_t size() const noexcept { return static_cast<std::uint32_t>(m_time.size()); }
+    std::uint64_t rebuilds() const noexcept { return m_rebuilds; }
+    std::size_t memoryBytes() const noexcept {
+        return m_time.capacity() * sizeof(Real) + (m_next.capacity() + m_prev.capacity() + m_bin.capacity() +
+                                                   m_head.capacity()) * 4;
+    }
+
+private:
+    static constexpr std::uint32_t kNone = 0xFFFFFFFFu;
+    std::uint32_t binOf(Real t) const noexcept;
+    void link(std::uint32_t i, std::uint32_t bin) noexcept;
+    void unlink(std::uint32_t i) noexcept;
+    /// Makes the current bin the first non-empty one (rebuilding the window if needed) and
+    /// finds its earliest event.
+    void settle() noexcept;
+    void rebuild() noexcept;
+    /// Moves every event to the overflow and rebuilds: re-tunes the bin width when the current
+    /// bin has grown long (the first window was made from too few or unrepresentative times).
+    void rebuildAll() noexcept;
+
+    std::vector<Real> m_time;          ///< [s] per particle
+    std::vector<std::uint32_t> m_next, m_prev, m_bin;  ///< list links and bin of each particle
+    std::vector<std::uint32_t> m_head; ///< first particle of each bin; [B] is the overflow list
+    std::uint32_t m_bins = 1, m_current = 0, m_top = 0;
+    Real m_start = 0;                  ///< [s] start of bin 0
+    Real m_width = 1;                  ///< [s] bin width
+    Real m_invWidth = 1;
+    std::uint64_t m_rebuilds = 0;
+    std::uint64_t m_setsSinceRebuild = 0;  ///< amortisation guard of rebuildAll
 };
 
 }  // namespace granulab::edmd

@@ -65,12 +65,35 @@ TEST(EventQueue, TournamentTreeAgreesWithSortedReference) {
 TEST(EventQueue, TiesGoToTheSmallerIndex) {
     edmd::AddressableHeap h;
     edmd::TournamentTree t;
+    edmd::CalendarQueue c;
     h.reset(5);
     t.reset(5);
+    c.reset(5);
     for (std::uint32_t i : {4u, 2u, 3u}) {
         h.set(i, 1.0);
         t.set(i, 1.0);
+        c.set(i, 1.0);
     }
     EXPECT_EQ(h.top(), 2u);
     EXPECT_EQ(t.top(), 2u);
+    EXPECT_EQ(c.top(), 2u);
+}
+
+TEST(EventQueue, CalendarQueueAgreesWithSortedReference) {
+    for (std::uint32_t n : {1u, 2u, 3u, 7u, 64u, 1000u}) agreesWithSortedReference<edmd::CalendarQueue>(n, n, 20000);
+}
+
+TEST(EventQueue, CalendarQueueHandlesOnlyInfiniteAndFarFutureEvents) {
+    edmd::CalendarQueue q;
+    q.reset(4);
+    EXPECT_EQ(q.top(), 0u);  // all at +infinity: the smallest index
+    q.set(2, 1e9);
+    EXPECT_EQ(q.top(), 2u);
+    q.set(3, 1e-9);
+    EXPECT_EQ(q.top(), 3u);
+    q.set(3, std::numeric_limits<Real>::infinity());
+    EXPECT_EQ(q.top(), 2u);
+    q.set(2, std::numeric_limits<Real>::infinity());
+    EXPECT_EQ(q.top(), 0u);
+    EXPECT_GE(q.rebuilds(), 1u);
 }
