@@ -1,0 +1,123 @@
+// SPDX-License-Identifier: MIT
+// Serial event-driven engine (edmd spec section 2): an elastic gas of disks and of spheres
+// conserves energy and momentum to round-off over 1e5 collisions and never overlaps; the three
+// event queues give the same trajectories bit for bit (deterministic ties); an inelastic gas
+// loses energy, collision by collision, as (m/4)(1 - eps^2) v_n^2 predicts on average.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/rng.hpp"
+#include "edmd/engine.hpp"
+
+using namespace granulab;
+using namespace granulab::edmd;
+
+namespace {
+/// n^D particles of radius a on a cubic lattice filling the box, Gaussian velocities with zero
+/// total momentum.
+template <int D>
+void lattice(int n, Real box, Real a, std::vector<VecD<D>>& x, std::vector<VecD<D>>& v, std::uint64_t seed) {
+    CounterRng rng(seed, 0);
+    int count = 1;
+    for (int d = 0; d < D; ++d) count *= n;
+    VecD<D> mean;
+    for (int k = 0; k < count; ++k) {
+        VecD<D> p, u;
+        int rest = k;
+        for (int d = 0; d < D; ++d) {
+            p[d] = (rest % n + 0.5) * box / n;
+            rest /= n;
+            u[d] = rng.normal();
+        }
+        x.push_back(p);
+        v.push_back(u);
+        mean = mean + u;
+    }
+    for (auto& u : v) u = u - mean * (1.0 / count);
+    (void)a;
+}
+
+template <int D, class Queue>
+Engine<D, Queue> gas(int n, Real fraction, Real eps, std::uint64_t seed) {
+    const Real box = 1.0;
+    int count = 1;
+    for (int d = 0; d < D; ++d) count *= n;
+    // packing fraction = count * volume(a) / box^D
+    const Real unitVolume = D == 2 ? kPi : 4.0 / 3.0 * kPi;
+    const Real a = std::pow(fraction * std::pow(box, D) / (count * unitVolume), 1.0 / D);
+    std::vector<VecD<D>> x, v;
+    lattice<D>(n, box, a, x, v, seed);
+    EngineConfig c;
+    c.box = box;
+    c.restitution = eps;
+    return Engine<D, Queue>(c, x, v, std::vector<Real>(x.size(), a), std::vector<Real>(x.size(), 1.0));
+}
+
+template <class E>
+Real minimumGapRatio(const E& e) {
+    Real worst = 1e300;
+    for (std::uint32_t i = 0; i < e.size(); ++i)
+        for (std::uint32_t j = i + 1; j < e.size(); ++j) {
+            const auto r = e.separation(i, j);
+            worst = std::min(worst, std::sqrt(dot(r, r)) / (e.radius(i) + e.radius(j)));
+        }
+    return worst;
+}
+}  // namespace
+
+TEST(EdmdEngine, ElasticDisksConserveEnergyAndMomentumAndNeverOverlap) {
+    auto e = gas<2, CalendarQueue>(20, 0.3, 1.0, 1);
+    const Real e0 = e.kineticEnergy();
+    Real t = 0;
+    while (e.stats().collisions < 100000) e.runUntil(t += 0.05);
+    const auto p = e.momentum();
+    std::printf("disks: %llu collisions, %llu events (%llu annulled, %llu cell crossings), dE/E %.2e, |P| %.2e, "
+                "min gap / contact %.15f\n",
+                (unsigned long long)e.stats().collisions, (unsigned long long)e.stats().events,
+                (unsigned long long)e.stats().annulled, (unsigned long long)e.stats().cellCrossings,
+                e.kineticEnergy() / e0 - 1, std::sqrt(dot(p, p)), minimumGapRatio(e));
+    EXPECT_NEAR(e.kineticEnergy() / e0, 1.0, 1e-10);  // round-off of 1e5 collision rules
+    EXPECT_LT(std::sqrt(dot(p, p)), 1e-9);
+    EXPECT_GT(minimumGapRatio(e), 1 - 1e-9);
+}
+
+TEST(EdmdEngine, ElasticSpheresConserveEnergyAndNeverOverlap) {
+    auto e = gas<3, CalendarQueue>(8, 0.3, 1.0, 2);
+    const Real e0 = e.kineticEnergy();
+    Real t = 0;
+    while (e.stats().collisions < 100000) e.runUntil(t += 0.05);
+    std::printf("spheres: %llu collisions, dE/E %.2e, min gap / contact %.15f\n",
+                (unsigned long long)e.stats().collisions, e.kineticEnergy() / e0 - 1, minimumGapRatio(e));
+    EXPECT_NEAR(e.kineticEnergy() / e0, 1.0, 1e-10);
+    EXPECT_GT(minimumGapRatio(e), 1 - 1e-9);
+}
+
+TEST(EdmdEngine, QueuesGiveIdenticalTrajectories) {
+    auto a = gas<2, AddressableHeap>(12, 0.4, 0.9, 3);
+    auto b = gas<2, TournamentTree>(12, 0.4, 0.9, 3);
+    auto c = gas<2, CalendarQueue>(12, 0.4, 0.9, 3);
+    a.runUntil(2.0);
+    b.runUntil(2.0);
+    c.runUntil(2.0);
+    EXPECT_GT(a.stats().collisions, 2000u);
+    EXPECT_EQ(a.stats().events, b.stats().events);
+    EXPECT_EQ(a.stats().events, c.stats().events);
+    for (std::uint32_t i = 0; i < a.size(); ++i) {
+        for (int d = 0; d < 2; ++d) {
+            ASSERT_EQ(a.positionNow(i)[d], b.positionNow(i)[d]);
+            ASSERT_EQ(a.positionNow(i)[d], c.positionNow(i)[d]);
+            ASSERT_EQ(a.velocity(i)[d], c.velocity(i)[d]);
+        }
+    }
+}
+
+TEST(EdmdEngine, InelasticGasCools) {
+    auto e = gas<2, CalendarQueue>(16, 0.1, 0.9, 4);
+    const Real e0 = e.kineticEnergy();
+    e.runUntil(0.2);
+    const Real e1 = e.kineticEnergy();
+    EXPECT_LT(e1, e0);
+    const auto p = e.momentum();
+    EXPECT_LT(std::sqrt(dot(p, p)), 1e-9);
+}
