@@ -11,11 +11,13 @@ namespace granulab::edmd {
 template <int D, class Queue>
 Engine<D, Queue>::Engine(EngineConfig config, std::vector<V> x, std::vector<V> v, std::vector<Real> radius,
                          std::vector<Real> mass)
-    : m_config(config), m_x(std::move(x)), m_v(std::move(v)), m_radius(std::move(radius)), m_mass(std::move(mass)) {
-    const auto n = static_cast<std::uint32_t>(m_x.size());
-    if (m_v.size() != n || m_radius.size() != n || m_mass.size() != n)
+    : m_config(config), m_mass(std::move(mass)) {
+    const auto n = static_cast<std::uint32_t>(x.size());
+    if (v.size() != n || radius.size() != n || m_mass.size() != n)
         throw std::invalid_argument("edmd::Engine: position, velocity, radius and mass counts differ");
-    const Real rmax = n ? *std::max_element(m_radius.begin(), m_radius.end()) : 0;
+    m_s.resize(n);
+    for (std::uint32_t i = 0; i < n; ++i) m_s[i] = {x[i], v[i], 0.0, radius[i]};
+    const Real rmax = n ? *std::max_element(radius.begin(), radius.end()) : 0;
     const Real edge = std::max(m_config.cellSize, 2 * rmax);
     m_cells = edge > 0 ? static_cast<int>(std::floor(m_config.box / edge)) : 3;
     if (m_cells < 3) throw std::invalid_argument("edmd::Engine: the box must hold at least 3 cells of one diameter");
@@ -23,7 +25,6 @@ Engine<D, Queue>::Engine(EngineConfig config, std::vector<V> x, std::vector<V> v
     std::size_t cellCount = 1;
     for (int d = 0; d < D; ++d) cellCount *= static_cast<std::size_t>(m_cells);
     m_head.assign(cellCount, 0xFFFFFFFFu);
-    m_tst.assign(n, 0);
     m_counter.assign(n, 0);
     m_cell.assign(n, 0);
     m_next.assign(n, 0xFFFFFFFFu);
@@ -32,7 +33,7 @@ Engine<D, Queue>::Engine(EngineConfig config, std::vector<V> x, std::vector<V> v
     for (std::uint32_t i = 0; i < n; ++i) {
         int c[D];
         for (int d = 0; d < D; ++d)
-            c[d] = std::clamp(static_cast<int>(std::floor(m_x[i][d] / m_cellEdge)), 0, m_cells - 1);
+            c[d] = std::clamp(static_cast<int>(std::floor(m_s[i].x[d] / m_cellEdge)), 0, m_cells - 1);
         insertIntoCell(i, cellIndex(c));
     }
     m_queue.reset(n);
@@ -88,20 +89,21 @@ typename Engine<D, Queue>::V Engine<D, Queue>::separation(std::uint32_t i, std::
 
 template <int D, class Queue>
 void Engine<D, Queue>::advance(std::uint32_t i, Real t) noexcept {  // free flight (Eq. 2.2-2.4, g = 0)
-    m_x[i] = m_x[i] + m_v[i] * (t - m_tst[i]);
-    m_tst[i] = t;
+    State& p = m_s[i];
+    p.x = p.x + p.v * (t - p.tst);
+    p.tst = t;
 }
 
 template <int D, class Queue>
 void Engine<D, Queue>::schedule(std::uint32_t i) noexcept {  // spec 2.8: keep only the earliest
     int c[D];
     cellCoords(i, c);
-    const V xi = m_x[i] + m_v[i] * (m_now - m_tst[i]);
+    const V xi = m_s[i].x + m_s[i].v * (m_now - m_s[i].tst);
     // The next cell crossing (per dimension: the wall the velocity points at).
     Real best = kNoEvent;
     Event ev;
     for (int d = 0; d < D; ++d) {
-        const Real v = m_v[i][d];
+        const Real v = m_s[i].v[d];
         if (v == 0) continue;
         const Real lo = c[d] * m_cellEdge, hi = lo + m_cellEdge;
         const Real dt = std::max<Real>(0, v > 0 ? (hi - xi[d]) / v : (lo - xi[d]) / v);
@@ -111,22 +113,30 @@ void Engine<D, Queue>::schedule(std::uint32_t i) noexcept {  // spec 2.8: keep o
         }
     }
     // Collisions with the particles of the 3^D neighbour cells.
+    int lo[D], hi[D];  // neighbour coordinates per dimension, wrapped without a division
+    for (int d = 0; d < D; ++d) {
+        lo[d] = c[d] == 0 ? m_cells - 1 : c[d] - 1;
+        hi[d] = c[d] == m_cells - 1 ? 0 : c[d] + 1;
+    }
     int offset[D];
-    for (int d = 0; d < D; ++d) offset[d] = -1;
+    for (int d = 0; d < D; ++d) offset[d] = 0;
+    const V vi = m_s[i].v;
+    const Real ri = m_s[i].radius;
     for (;;) {
         int nc[D];
-        for (int d = 0; d < D; ++d) nc[d] = (c[d] + offset[d] + m_cells) % m_cells;
+        for (int d = 0; d < D; ++d) nc[d] = offset[d] == 0 ? lo[d] : (offset[d] == 1 ? c[d] : hi[d]);
         for (std::uint32_t j = m_head[cellIndex(nc)]; j != 0xFFFFFFFFu; j = m_next[j]) {
             if (j == i) continue;
-            const V xj = m_x[j] + m_v[j] * (m_now - m_tst[j]);
-            const Real dt = pairCollisionTime(minimumImage(xi - xj), m_v[i] - m_v[j], m_radius[i] + m_radius[j]);
+            const State& q = m_s[j];
+            const V xj = q.x + q.v * (m_now - q.tst);
+            const Real dt = pairCollisionTime(minimumImage(xi - xj), vi - q.v, ri + q.radius);
             if (dt < best || (dt == best && ev.kind == Kind::Collision && j < ev.partner)) {
                 best = dt;
                 ev = {Kind::Collision, j, m_counter[j]};
             }
         }
         int d = 0;
-        while (d < D && ++offset[d] > 1) offset[d++] = -1;
+        while (d < D && ++offset[d] > 2) offset[d++] = 0;
         if (d == D) break;
     }
     m_event[i] = ev;
@@ -152,9 +162,9 @@ std::uint64_t Engine<D, Queue>::runUntil(Real tEnd) {
                 continue;
             }
             advance(j, t);
-            V k = minimumImage(m_x[i] - m_x[j]);
+            V k = minimumImage(m_s[i].x - m_s[j].x);
             k = k * (1 / std::sqrt(dot(k, k)));
-            smoothCollision(m_v[i], m_v[j], m_mass[i], m_mass[j], k, m_config.restitution);
+            smoothCollision(m_s[i].v, m_s[j].v, m_mass[i], m_mass[j], k, m_config.restitution);
             ++m_counter[i];
             ++m_counter[j];
             ++m_stats.collisions;
@@ -169,10 +179,10 @@ std::uint64_t Engine<D, Queue>::runUntil(Real tEnd) {
             c[d] += up ? 1 : -1;
             if (c[d] == m_cells) {
                 c[d] = 0;
-                m_x[i][d] -= m_config.box;
+                m_s[i].x[d] -= m_config.box;
             } else if (c[d] < 0) {
                 c[d] = m_cells - 1;
-                m_x[i][d] += m_config.box;
+                m_s[i].x[d] += m_config.box;
             }
             removeFromCell(i);
             insertIntoCell(i, cellIndex(c));
@@ -188,14 +198,14 @@ std::uint64_t Engine<D, Queue>::runUntil(Real tEnd) {
 template <int D, class Queue>
 Real Engine<D, Queue>::kineticEnergy() const noexcept {
     Real e = 0;
-    for (std::uint32_t i = 0; i < size(); ++i) e += 0.5 * m_mass[i] * dot(m_v[i], m_v[i]);
+    for (std::uint32_t i = 0; i < size(); ++i) e += 0.5 * m_mass[i] * dot(m_s[i].v, m_s[i].v);
     return e;
 }
 
 template <int D, class Queue>
 typename Engine<D, Queue>::V Engine<D, Queue>::momentum() const noexcept {
     V p;
-    for (std::uint32_t i = 0; i < size(); ++i) p = p + m_v[i] * m_mass[i];
+    for (std::uint32_t i = 0; i < size(); ++i) p = p + m_s[i].v * m_mass[i];
     return p;
 }
 

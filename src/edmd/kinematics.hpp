@@ -43,7 +43,7 @@ inline constexpr Real kNoEvent = std::numeric_limits<Real>::infinity();
 /// contact distance s = a1 + a2 (edmd Eq. 2.18-2.19, robust form of spec 2.8): +inf if they
 /// separate or miss; 0 if they already overlap by round-off while approaching.
 template <int D>
-Real pairCollisionTime(const VecD<D>& r12, const VecD<D>& v12, Real s) noexcept {
+[[gnu::always_inline]] inline Real pairCollisionTime(const VecD<D>& r12, const VecD<D>& v12, Real s) noexcept {
     const Real b = dot(r12, v12);
     if (!(b < 0)) return kNoEvent;  // separating (also the pair that has just collided)
     const Real v2 = dot(v12, v12);
