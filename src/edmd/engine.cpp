@@ -26,6 +26,7 @@ Engine<D, Queue>::Engine(EngineConfig config, std::vector<V> x, std::vector<V> v
     for (int d = 0; d < D; ++d) cellCount *= static_cast<std::size_t>(m_cells);
     m_head.assign(cellCount, 0xFFFFFFFFu);
     m_counter.assign(n, 0);
+    m_lastCollision.assign(n, -kNoEvent);
     m_cell.assign(n, 0);
     m_next.assign(n, 0xFFFFFFFFu);
     m_prev.assign(n, 0xFFFFFFFFu);
@@ -164,7 +165,9 @@ std::uint64_t Engine<D, Queue>::runUntil(Real tEnd) {
             advance(j, t);
             V k = minimumImage(m_s[i].x - m_s[j].x);
             k = k * (1 / std::sqrt(dot(k, k)));
-            smoothCollision(m_s[i].v, m_s[j].v, m_mass[i], m_mass[j], k, m_config.restitution);
+            const bool recent = m_config.tc > 0 && (t - m_lastCollision[i] < m_config.tc || t - m_lastCollision[j] < m_config.tc);
+            smoothCollision(m_s[i].v, m_s[j].v, m_mass[i], m_mass[j], k, recent ? 1.0 : m_config.restitution);
+            m_lastCollision[i] = m_lastCollision[j] = t;
             ++m_counter[i];
             ++m_counter[j];
             ++m_stats.collisions;

@@ -18,6 +18,9 @@ namespace granulab::edmd {
 struct EngineConfig {
     Real box = 1;            ///< [m] edge of the periodic cube/square
     Real restitution = 1;    ///< normal restitution eps
+    /// TC model (edmd spec 4.3, Luding & McNamara): a collision is elastic if either partner
+    /// collided less than tc [s] before (prevents inelastic collapse); 0: off.
+    Real tc = 0;
     Real cellSize = 0;       ///< [m] lower bound of the cell edge; 0: the largest diameter
 };
 
@@ -79,6 +82,7 @@ private:
     std::vector<State> m_s;
     std::vector<Real> m_mass;
     std::vector<std::uint64_t> m_counter;
+    std::vector<Real> m_lastCollision;  ///< [s] time of each particle's last collision (TC model)
     std::vector<std::uint32_t> m_cell, m_next, m_prev, m_head;
     std::vector<Event> m_event;
     Queue m_queue;

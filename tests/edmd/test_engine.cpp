@@ -121,3 +121,25 @@ TEST(EdmdEngine, InelasticGasCools) {
     const auto p = e.momentum();
     EXPECT_LT(std::sqrt(dot(p, p)), 1e-9);
 }
+
+TEST(EdmdEngine, TcModelMakesQuickRepeatCollisionsElastic) {
+    // Two disks on the x axis of a periodic box of 1 m approach at 2 m/s, collide (eps = 0.5),
+    // and meet again through the boundary after (1 - 2 s)/v_rel. With t_c longer than that
+    // interval the second collision is elastic, with t_c shorter it is inelastic again.
+    for (const Real tc : {0.0, 10.0}) {
+        EngineConfig c;
+        c.box = 1.0;
+        c.restitution = 0.5;
+        c.tc = tc;
+        const Real a = 0.05;
+        Engine<2, CalendarQueue> e(c, {VecD<2>{{0.3, 0.5}}, VecD<2>{{0.7, 0.5}}}, {VecD<2>{{1, 0}}, VecD<2>{{-1, 0}}},
+                                   {a, a}, {1.0, 1.0});
+        e.runUntil(0.16);  // first contact at t = (0.4 - 0.1)/2 = 0.15
+        ASSERT_EQ(e.stats().collisions, 1u);
+        EXPECT_NEAR(e.velocity(0)[0] - e.velocity(1)[0], -1.0, 1e-14);  // |v_rel| 2 -> 1
+        e.runUntil(1.0);  // second contact 0.8 s later (gap 1 - 4 a at 1 m/s) through the boundary
+        ASSERT_EQ(e.stats().collisions, 2u);
+        const Real vrel = std::abs(e.velocity(0)[0] - e.velocity(1)[0]);
+        EXPECT_NEAR(vrel, tc > 0 ? 1.0 : 0.5, 1e-14) << "tc " << tc;
+    }
+}
