@@ -329,19 +329,13 @@ void areaWalls(model::ParticleStore& s, const model::WallSet& walls, ContactList
     Real* xiHist = trialHistory ? list.xiTrial.data() : list.xi.data();
     Real* areaHist = trialHistory ? list.areaOldTrial.data() : list.areaOld.data();
     std::uint64_t contacts = 0;
-    area::WallQuad quad;
     for (std::uint32_t p = begin; p < end; ++p) {
         const std::uint32_t i = list.first[p];
         const auto& seg = walls.segments[list.second[p]];
         const Vec2 xi{s.x[i], s.y[i]};
-        area::wallQuad(seg.a, seg.b, xi, 2 * s.radius[i], quad);
         area::AreaPair c;
         c.wall = true;
-        if (s.shape[i] != model::kDiskShape) {
-            c.g = geom::trackPolygonContact(area::frameOf(s, sc, i), quad.frame, list.features[p], sc.featureStats);
-        } else {
-            c.g = geom::circlePolygonContact(xi, s.radius[i], quad.world, 4);
-        }
+        c.g = area::wallGeometry(s, sc, i, seg.a, seg.b, list.features[p]);
         if (!c.g.touching) {
             xiHist[p] = 0;
             areaHist[p] = 0;
@@ -455,7 +449,6 @@ Real areaEnergy(const model::ParticleStore& s, const model::WallSet& walls, cons
                 std::uint32_t e, const LawTable& laws, bool wall, ShapeContext& sc) {
     Real energy = 0;
     const std::uint32_t nm = laws.materialCount();
-    area::WallQuad quad;
     for (std::uint32_t p = b; p < e; ++p) {
         const std::uint32_t i = cl.first[p];
         geom::FeatureCache cache = cl.features[p];  // a copy: energies do not disturb the tracking
@@ -464,12 +457,7 @@ Real areaEnergy(const model::ParticleStore& s, const model::WallSet& walls, cons
         Real l;
         if (wall) {
             const auto& seg = walls.segments[cl.second[p]];
-            area::wallQuad(seg.a, seg.b, {s.x[i], s.y[i]}, 2 * s.radius[i], quad);
-            if (s.shape[i] != model::kDiskShape) {
-                g = geom::trackPolygonContact(area::frameOf(s, sc, i), quad.frame, cache, sc.featureStats);
-            } else {
-                g = geom::circlePolygonContact({s.x[i], s.y[i]}, s.radius[i], quad.world, 4);
-            }
+            g = area::wallGeometry(s, sc, i, seg.a, seg.b, cache);
             otherMat = seg.material;
             l = norm(g.point - Vec2{s.x[i], s.y[i]});
         } else {
@@ -494,10 +482,12 @@ Real areaEnergy(const model::ParticleStore& s, const model::WallSet& walls, cons
 }  // namespace
 
 Real contactEnergy(const model::ParticleStore& s, const model::WallSet& walls, const NeighborList& list,
-                   const LawTable& laws, const ShapeContext& shapes) {
+                   const LawTable& laws, const model::ShapePool& shapes) {
     Real energy = 0;
     const std::uint32_t nm = laws.materialCount();
-    ShapeContext sc = shapes;  // own scratch and statistics
+    ShapeContext sc;  // own world corners and statistics: energies do not disturb the step
+    sc.pool = &shapes;
+    sc.anyPolygon = shapes.size() > 0;
     sc.update(s);
     const auto eval = [&](const ContactList& cl, bool wall) {
         forEachBucket(cl, laws, [&](auto* nT, auto* dT, auto* tT, std::uint32_t b, std::uint32_t e) {

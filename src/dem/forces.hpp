@@ -74,8 +74,9 @@ void computeForces(model::ParticleStore& s, const model::WallSet& walls, Neighbo
 
 /// Elastic energy [J] stored in all contacts (normal and tangential springs); no side effects.
 /// For the gc2d area law, whose force has no potential in general, the normal part is estimated
-/// as F_n h_eff / 2 (exact for flat faces).
+/// as F_n h_eff / 2 (exact for flat faces). `shapes`: the polygon shapes (world corners are
+/// computed here from the store).
 Real contactEnergy(const model::ParticleStore& s, const model::WallSet& walls, const NeighborList& list,
-                   const LawTable& laws, const ShapeContext& shapes);
+                   const LawTable& laws, const model::ShapePool& shapes);
 
 }  // namespace granulab::dem

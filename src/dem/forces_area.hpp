@@ -63,6 +63,18 @@ inline void wallQuad(Vec2 a, Vec2 b, Vec2 from, Real thickness, WallQuad& q) noe
     q.frame.inradius = 0.5 * std::min(thickness, len);
 }
 
+/// Geometry of particle i against wall segment [a, b] (the plate behind it), normal pushing i
+/// away from the wall.
+inline geom::AreaContact wallGeometry(const model::ParticleStore& s, ShapeContext& sc, std::uint32_t i, Vec2 a, Vec2 b,
+                                      geom::FeatureCache& cache) noexcept {
+    const Vec2 xi{s.x[i], s.y[i]};
+    WallQuad quad;
+    wallQuad(a, b, xi, 2 * s.radius[i], quad);
+    if (s.shape[i] != model::kDiskShape)
+        return geom::trackPolygonContact(frameOf(s, sc, i), quad.frame, cache, sc.featureStats);
+    return geom::circlePolygonContact(xi, s.radius[i], quad.world, 4);
+}
+
 /// Everything the gc2d law needs about one contact; j may be a wall (infinite mass).
 struct AreaPair {
     geom::AreaContact g;

@@ -135,9 +135,7 @@ Energies World::energies() const noexcept {
         e.rotational += 0.5 * inertia * s.omega[i] * s.omega[i];
         e.potential -= s.mass[i] * (m_config.gravity.x * s.x[i] + m_config.gravity.y * s.y[i]);
     }
-    ShapeContext shapes = m_shapes;
-    shapes.pool = &m_pool;
-    e.elastic = contactEnergy(m_store, m_walls, m_list, m_laws, shapes);
+    e.elastic = contactEnergy(m_store, m_walls, m_list, m_laws, m_pool);
     return e;
 }
 
