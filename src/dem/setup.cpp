@@ -166,15 +166,19 @@ void adviseFaceTimeStep(const LawTable& laws, const model::InitialParticles& ini
                 if (const auto* area = std::get_if<AreaNormal>(&laws.law(a, b).normal))
                     stiffest[a] = std::max(stiffest[a], area->E);
     const auto& pool = initial.shapes;
+    std::vector<Real> faceRatio(pool.size(), 1);  // k_face / E per shape
+    for (std::uint32_t k = 0; k < pool.size(); ++k) {
+        Real edge = 0;  // longest edge [m]: the longest possible face contact
+        const auto first = pool.start[k], count = pool.count[k];
+        for (std::uint32_t c = 0; c < count; ++c)
+            edge = std::max(edge, norm(pool.corners[first + (c + 1) % count] - pool.corners[first + c]));
+        if (pool.inradius[k] > 0) faceRatio[k] = std::max<Real>(1, 2 * edge / pool.inradius[k]);  // round: the gc2d rule
+    }
     for (std::size_t k = 0; k < initial.particles.size(); ++k) {
         const auto& p = initial.particles[k];
         if (p.shape == model::kDiskShape || !(stiffest[p.material] > 0) || !(pool.inradius[p.shape] > 0)) continue;
         const Real m = density[p.material] * pool.area[p.shape];
-        Real edge = 0;  // longest edge [m]: the longest possible face contact
-        const auto first = pool.start[p.shape], count = pool.count[p.shape];
-        for (std::uint32_t c = 0; c < count; ++c)
-            edge = std::max(edge, norm(pool.corners[first + (c + 1) % count] - pool.corners[first + c]));
-        const Real ratio = std::max<Real>(1, 2 * edge / pool.inradius[p.shape]);  // round grains: the gc2d rule
+        const Real ratio = faceRatio[p.shape];
         const Real dt = kPi / 10.0 * std::sqrt(m / (stiffest[p.material] * ratio));
         if (advice.faceAdvisedDt == 0 || dt < advice.faceAdvisedDt) {
             advice.faceAdvisedDt = dt;
