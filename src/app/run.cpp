@@ -306,9 +306,15 @@ int runCommand(const RunOptions& opt) {
                    js["particle_steps_per_s"].get<double>());
         if (scene.output.vtk) {
             fmt::print("results in {}/ : summary.json, series.csv, final.csv, snapshots.pvd, checkpoint.bin\n", dir);
-            fmt::print("view in ParaView: paraview {}/snapshots.pvd  (Glyph filter: type Sphere, scale array 'radius', "
-                       "factor 2, glyph mode 'All Points')\n",
-                       dir);
+            const bool polygons = world.shapes().size() > 0;
+            const bool disks = std::any_of(world.store().shape.begin(), world.store().shape.end(),
+                                           [](std::uint32_t k) { return k == model::kDiskShape; });
+            if (disks)
+                fmt::print("view in ParaView: paraview {}/snapshots.pvd  (disks: Glyph filter, type Sphere, scale array "
+                           "'radius', factor 2, glyph mode 'All Points'{})\n",
+                           dir, polygons ? "; polygons show as they are" : "");
+            else
+                fmt::print("view in ParaView: paraview {}/snapshots.pvd  (polygons show as cells; colour by 'speed')\n", dir);
             fmt::print("pictures:         granulab render {} --png\n", dir);
         } else {
             fmt::print("results in {}/ : summary.json, series.csv, final.csv, checkpoint.bin (VTK output off)\n", dir);
