@@ -93,6 +93,23 @@ inline Real firstPassage(Real x, Real v, Real g, Real target) noexcept {
     return t2 > 0 ? t2 : (d <= 0 && v >= 0 ? 0 : kNoEvent);
 }
 
+/// Time until a gap s [m] closes when it shrinks with speed u [m/s] (u > 0: closing) and
+/// acceleration gw [m/s^2] (gw > 0: towards closing): the smallest t > 0 with
+/// s = u t + gw t^2 / 2 (edmd Eq. 2.22-2.25 along the plane normal), +inf if never. A gap that
+/// is already closed by round-off (s <= 0) closes now if it is still closing, else when gravity
+/// brings it back. Every positive root has the cancellation-free form 2 s / (u + sqrt(u^2 +
+/// 2 gw s)). Used for cell faces (s = distance to the face) and walls (s = distance - a).
+[[gnu::always_inline]] inline Real closingTime(Real s, Real u, Real gw) noexcept {
+    if (!(s > 0)) {
+        if (u > 0 || (u == 0 && gw > 0)) return 0;
+        return gw > 0 ? -2 * u / gw : kNoEvent;
+    }
+    if (gw == 0) return u > 0 ? s / u : kNoEvent;
+    const Real disc = u * u + 2 * gw * s;
+    if (!(disc >= 0) || (gw < 0 && u <= 0)) return kNoEvent;  // turns back before the plane
+    return 2 * s / (u + std::sqrt(disc));
+}
+
 /// Smooth inelastic collision with normal restitution eps (edmd Eq. 4.6, with masses for
 /// polydisperse systems): unit normal k = (r1 - r2)/|r1 - r2|; only the normal relative
 /// velocity changes, momentum is conserved, energy loss m_red/2 (1 - eps^2) v_n^2.
@@ -126,6 +143,29 @@ inline void roughCollision(Vec3& v1, Vec3& v2, Vec3& w1, Vec3& w2, const Vec3& k
     const Vec3 dw = crossProduct(k, u) * ((1 + phi) / (a * (2 * z + 2)));
     w1 = w1 + dw;  // same sign for both (spec 2.5.2)
     w2 = w2 + dw;
+}
+
+/// Rough inelastic collision of two spheres of any radii a1, a2, masses m1, m2 and moments of
+/// inertia I = z m a^2 (edmd Eq. 2.6-2.8 generalised; reduces to roughCollision for equal
+/// spheres). k = (r1 - r2)/|r1 - r2|; the contact-point relative velocity
+/// g = v12 + k x (a1 w1 + a2 w2) has its normal part reversed with eps and its tangential part
+/// with phi: the tangential impulse is -(1 + phi) m_t g_t with 1/m_t = 1/m1 + 1/m2 +
+/// a1^2/I1 + a2^2/I2. normalImpulse [kg m/s] is the normal impulse on particle 1 along k
+/// (computed by the caller, so that speed-dependent restitution and growing spheres enter
+/// there). Disks: vectors in the plane (z = 0), spins along z.
+inline void roughCollisionGeneral(Vec3& v1, Vec3& v2, Vec3& w1, Vec3& w2, const Vec3& k, Real a1, Real a2, Real m1,
+                                  Real m2, Real z, Real normalImpulse, Real phi) noexcept {
+    const Vec3 v12 = v1 - v2;
+    const Vec3 g = v12 + crossProduct(k, w1 * a1 + w2 * a2);
+    const Vec3 gt = g - k * dot(g, k);
+    const Real invMt = 1 / m1 + 1 / m2 + 1 / (z * m1) + 1 / (z * m2);
+    const Vec3 jt = gt * (-(1 + phi) / invMt);
+    const Vec3 j = k * normalImpulse + jt;
+    v1 = v1 + j * (1 / m1);
+    v2 = v2 - j * (1 / m2);
+    const Vec3 kxj = crossProduct(k, jt);
+    w1 = w1 - kxj * (1 / (z * m1 * a1));  // torque (-a1 k) x J over I1 = z m1 a1^2
+    w2 = w2 - kxj * (1 / (z * m2 * a2));
 }
 
 }  // namespace granulab::edmd

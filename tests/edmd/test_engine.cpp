@@ -49,8 +49,8 @@ Engine<D, Queue> gas(int n, Real fraction, Real eps, std::uint64_t seed) {
     std::vector<VecD<D>> x, v;
     lattice<D>(n, box, a, x, v, seed);
     EngineConfig c;
-    c.box = box;
-    c.restitution = eps;
+    c.box = {box, box, box};
+    c.restitution.eps = eps;
     return Engine<D, Queue>(c, x, v, std::vector<Real>(x.size(), a), std::vector<Real>(x.size(), 1.0));
 }
 
@@ -107,7 +107,7 @@ TEST(EdmdEngine, QueuesGiveIdenticalTrajectories) {
         for (int d = 0; d < 2; ++d) {
             ASSERT_EQ(a.positionNow(i)[d], b.positionNow(i)[d]);
             ASSERT_EQ(a.positionNow(i)[d], c.positionNow(i)[d]);
-            ASSERT_EQ(a.velocity(i)[d], c.velocity(i)[d]);
+            ASSERT_EQ(a.velocityNow(i)[d], c.velocityNow(i)[d]);
         }
     }
 }
@@ -128,18 +128,18 @@ TEST(EdmdEngine, TcModelMakesQuickRepeatCollisionsElastic) {
     // interval the second collision is elastic, with t_c shorter it is inelastic again.
     for (const Real tc : {0.0, 10.0}) {
         EngineConfig c;
-        c.box = 1.0;
-        c.restitution = 0.5;
+        c.box = {1.0, 1.0, 1.0};
+        c.restitution.eps = 0.5;
         c.tc = tc;
         const Real a = 0.05;
         Engine<2, CalendarQueue> e(c, {VecD<2>{{0.3, 0.5}}, VecD<2>{{0.7, 0.5}}}, {VecD<2>{{1, 0}}, VecD<2>{{-1, 0}}},
                                    {a, a}, {1.0, 1.0});
         e.runUntil(0.16);  // first contact at t = (0.4 - 0.1)/2 = 0.15
         ASSERT_EQ(e.stats().collisions, 1u);
-        EXPECT_NEAR(e.velocity(0)[0] - e.velocity(1)[0], -1.0, 1e-14);  // |v_rel| 2 -> 1
+        EXPECT_NEAR(e.velocityNow(0)[0] - e.velocityNow(1)[0], -1.0, 1e-14);  // |v_rel| 2 -> 1
         e.runUntil(1.0);  // second contact 0.8 s later (gap 1 - 4 a at 1 m/s) through the boundary
         ASSERT_EQ(e.stats().collisions, 2u);
-        const Real vrel = std::abs(e.velocity(0)[0] - e.velocity(1)[0]);
+        const Real vrel = std::abs(e.velocityNow(0)[0] - e.velocityNow(1)[0]);
         EXPECT_NEAR(vrel, tc > 0 ? 1.0 : 0.5, 1e-14) << "tc " << tc;
     }
 }

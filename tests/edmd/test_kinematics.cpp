@@ -145,3 +145,74 @@ TEST(EdmdKinematics, RoughCollisionConservesAngularMomentumAndEnergyAtTheLimits)
         }
     }
 }
+
+TEST(EdmdKinematics, ClosingTimeIsTheSmallestPositiveRoot) {
+    CounterRng rng(21, 0);
+    for (int k = 0; k < 20000; ++k) {
+        const Real s = rng.uniform(0, 1), u = rng.uniform(-2, 2), gw = k % 3 == 0 ? 0 : rng.uniform(-3, 3);
+        const Real t = closingTime(s, u, gw);
+        // Brute force: first sign change of s - u t - gw t^2/2 on a fine grid up to 10 s.
+        Real reference = kNoEvent;
+        const int steps = 200000;
+        for (int n = 1; n <= steps; ++n) {
+            const Real tt = 10.0 * n / steps;
+            if (s - u * tt - 0.5 * gw * tt * tt <= 0) {
+                reference = tt;
+                break;
+            }
+        }
+        if (k > 300) break;  // the grid search is slow; a few hundred cases suffice
+        if (reference == kNoEvent) EXPECT_TRUE(t == kNoEvent || t > 10 - 1e-4) << s << " " << u << " " << gw;
+        else EXPECT_NEAR(t, reference, 10.0 / steps) << s << " " << u << " " << gw;
+    }
+    EXPECT_EQ(closingTime(0, 1, 0), 0);          // touching and closing: now
+    EXPECT_EQ(closingTime(0, -1, 0), kNoEvent);  // touching and opening: never
+    EXPECT_EQ(closingTime(0, 0, 0), kNoEvent);   // at rest on the plane without gravity: never
+    EXPECT_NEAR(closingTime(-1e-15, -1, 2), 1.0, 1e-12);  // opening, gravity brings it back
+}
+
+TEST(EdmdKinematics, GeneralRoughRuleMatchesTheEqualSphereRuleAndConservesAngularMomentum) {
+    CounterRng rng(22, 0);
+    auto randomVec = [&] { return Vec3{{rng.normal(), rng.normal(), rng.normal()}}; };
+    for (int k = 0; k < 1000; ++k) {
+        Vec3 n = randomVec();
+        n = n * (1 / std::sqrt(dot(n, n)));
+        const Real eps = rng.uniform(0, 1), phi = rng.uniform(-1, 1), z = 0.4;
+        // Equal spheres: the thesis rule (2.6-2.8) and the general one agree.
+        const Real a = 0.3, m = 2.0;
+        Vec3 v1 = randomVec(), v2 = randomVec(), w1 = randomVec(), w2 = randomVec();
+        if (dot(v1 - v2, n) > 0) std::swap(v1, v2);
+        Vec3 u1 = v1, u2 = v2, o1 = w1, o2 = w2;
+        roughCollision(v1, v2, w1, w2, n, a, eps, phi, z);
+        const Real jn = (1 + eps) * (-dot(u1 - u2, n)) * m / 2;
+        roughCollisionGeneral(u1, u2, o1, o2, n, a, a, m, m, z, jn, phi);
+        for (int d = 0; d < 3; ++d) {
+            EXPECT_NEAR(u1[d], v1[d], 1e-12);
+            EXPECT_NEAR(o2[d], w2[d], 1e-12);
+        }
+        // Unequal spheres: angular momentum about the contact point and momentum conserved;
+        // eps = 1, phi = 1 conserves energy.
+        const Real a1 = rng.uniform(0.1, 1), a2 = rng.uniform(0.1, 1), m1 = rng.uniform(0.5, 3), m2 = rng.uniform(0.5, 3);
+        const Vec3 r1 = n * a1, r2 = n * (-a2);  // centres relative to the contact point
+        Vec3 p1 = randomVec(), p2 = randomVec(), s1 = randomVec(), s2 = randomVec();
+        if (dot(p1 - p2, n) > 0) std::swap(p1, p2);
+        auto angular = [&] {
+            return crossProduct(r1, p1) * m1 + crossProduct(r2, p2) * m2 + s1 * (z * m1 * a1 * a1) +
+                   s2 * (z * m2 * a2 * a2);
+        };
+        auto energy = [&] {
+            return 0.5 * (m1 * dot(p1, p1) + m2 * dot(p2, p2) + z * m1 * a1 * a1 * dot(s1, s1) +
+                          z * m2 * a2 * a2 * dot(s2, s2));
+        };
+        const Vec3 L0 = angular();
+        const Real E0 = energy();
+        const bool conservative = k % 2 == 0;
+        const Real e = conservative ? 1 : eps, f = conservative ? 1 : phi;
+        const Real j = (1 + e) * (-dot(p1 - p2, n)) * m1 * m2 / (m1 + m2);
+        roughCollisionGeneral(p1, p2, s1, s2, n, a1, a2, m1, m2, z, j, f);
+        const Vec3 L1 = angular();
+        for (int d = 0; d < 3; ++d) EXPECT_NEAR(L1[d], L0[d], 1e-12 * (1 + std::abs(L0[d])));
+        if (conservative) EXPECT_NEAR(energy(), E0, 1e-12 * E0);
+        else EXPECT_LE(energy(), E0 * (1 + 1e-12));
+    }
+}
