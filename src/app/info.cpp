@@ -9,13 +9,51 @@
 #include "dem/contact/hertz_restitution.hpp"
 #include "dem/contact/registry.hpp"
 #include "dem/setup.hpp"
+#include "analysis/kinetic_theory.hpp"
 #include "io/validate.hpp"
+#include "io/validate_edmd.hpp"
 #include "model/particle_store.hpp"
 
 namespace granulab::app {
 
+namespace {
+
+/// `granulab info` for an event-driven gas: the resolved setup and the kinetic-theory scales
+/// and thresholds of edmd spec 4.3-4.6.
+int infoEdmd(const std::string& scenePath, const model::SceneDef& scene) {
+    const io::EdmdSetup s = io::validateEdmd(scene);
+    const auto& e = scene.edmd;
+    const int D = s.dim;
+    fmt::print("scene        {}\n", scenePath);
+    if (!scene.run.title.empty()) fmt::print("title        {}\n", scene.run.title);
+    fmt::print("engine       edmd ({}D event-driven hard {}), queue {}\n", D, D == 2 ? "disks" : "spheres", e.queue);
+    fmt::print("particles    {}  radius {} m{}, mass {} kg, placement {}\n", s.init.count, e.radius,
+               e.radiusMax > e.radius ? fmt::format(" .. {} m", e.radiusMax) : std::string(), e.mass, e.placement);
+    fmt::print("box          {}  ({}), volume fraction {:.5f}\n",
+               D == 2 ? fmt::format("{:.6g} x {:.6g} m", s.config.box[0], s.config.box[1])
+                      : fmt::format("{:.6g} x {:.6g} x {:.6g} m", s.config.box[0], s.config.box[1], s.config.box[2]),
+               e.periodic.empty() ? "periodic" : "per-axis boundaries as given", s.volumeFraction);
+    fmt::print("collisions   eps {} ({}), walls {}, phi {}, TC t_c = {:.4g} s\n", e.restitution, e.restitutionModel,
+               e.wallRestitution, e.tangentialRestitution, s.config.tc);
+    fmt::print("start        T0 = {} J, elastic pre-run of {} collisions per particle\n", e.temperature, e.equilibrate);
+    fmt::print("kinetics     t_E = {:.6g} s (Enskog, Eq. 4.33), end t = {:.6g} s{}\n", s.tE, s.endTime,
+               s.lambda > 0 && std::isfinite(s.endTime) ? fmt::format(" = tau {:.4g}", s.lambda * s.endTime / (2 * D * s.tE))
+                                                       : std::string());
+    const Real nu = std::min(s.volumeFraction, D == 2 ? 0.69 : 0.49);
+    const Real lOpt = analysis::opticalDepth(D, static_cast<Real>(s.init.count), nu);
+    fmt::print("thresholds   g_2a {:.4f}, l_opt {:.4g}, lambda {:.4g}, lambda_cl {:.4g} (clusters above), lambda_sh {:.4g}, "
+               "eps_ic {:.4f}\n",
+               analysis::contactValue(D, nu), lOpt, s.lambda, analysis::clusteringLambda(D, lOpt), analysis::shearLambda(D, lOpt),
+               analysis::collapseRestitution(lOpt));
+    for (const auto& w : s.warnings) fmt::print("warning      {}\n", w);
+    return 0;
+}
+
+}  // namespace
+
 int infoCommand(const std::string& scenePath, const std::vector<io::Override>& overrides) {
     const model::SceneDef scene = io::readScene(scenePath, overrides);
+    if (scene.run.engine == "edmd") return infoEdmd(scenePath, scene);
     const io::ValidatedScene v = io::validate(scene);
     const auto names = dem::materialNames(scene);
     const auto& ps = v.initial.particles;

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/progress.hpp"
+#include "app/run_edmd.hpp"
 #include "core/timer.hpp"
 #include "core/version.hpp"
 #include "dem/setup.hpp"
@@ -124,6 +125,7 @@ std::string describeStatus(std::uint32_t status, const dem::World& world, const 
 int runCommand(const RunOptions& opt) {
     const double startWall = wallSeconds();
     const model::SceneDef scene = io::readScene(opt.scene, opt.overrides);  // SceneError -> exit 2 in main
+    if (scene.run.engine == "edmd") return runEdmdCommand(opt, scene);
     io::ValidatedScene valid = io::validate(scene);
     for (const auto& w : valid.warnings) fmt::print(stderr, "warning: {}\n", w);
 

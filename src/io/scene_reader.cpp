@@ -250,7 +250,7 @@ void readRun(TableReader& r, model::RunDef& run) {
     if (r.integer("dimension", dim)) run.dimension = static_cast<int>(dim);
     std::int64_t seed = static_cast<std::int64_t>(run.seed);
     if (r.integer("seed", seed)) run.seed = static_cast<std::uint64_t>(seed);
-    if (!r.number("end_time", run.endTime) && !r.table().get("end_time"))
+    if (!r.number("end_time", run.endTime) && !r.table().get("end_time") && run.engine != "edmd")
         r.diags().error(run.loc, "run.end_time", "missing: simulated end time [s], allowed (0, inf)");
     r.number("benchmark_from", run.benchmarkFrom);
     r.string("title", run.title);
@@ -524,6 +524,58 @@ void readOutput(TableReader& r, model::OutputDef& o) {
     r.boolean("vtk", o.vtk);
 }
 
+void readEdmd(TableReader& r, model::EdmdDef& e) {
+    e.loc = r.loc();
+    if (const toml::node* n = r.node("box")) {
+        const auto* a = n->as_array();
+        const std::size_t count = a ? a->size() : 0;
+        if (count != 2 && count != 3) r.diags().error(locOf(*n, r.file()), r.keyPath("box"), "expected an array of 2 or 3 edge lengths [m]");
+        else r.numbers("box", e.box, count);
+    }
+    if (const toml::node* n = r.node("periodic")) {
+        const auto* a = n->as_array();
+        bool ok = a && (a->size() == 2 || a->size() == 3);
+        if (ok)
+            for (const auto& v : *a) {
+                if (!v.is_boolean()) ok = false;
+                else e.periodic.push_back(v.value<bool>().value_or(true));
+            }
+        if (!ok) r.diags().error(locOf(*n, r.file()), r.keyPath("periodic"), "expected an array of 2 or 3 booleans, one per axis");
+    }
+    r.integer("count", e.count);
+    r.number("volume_fraction", e.volumeFraction);
+    r.number("radius", e.radius);
+    r.number("radius_max", e.radiusMax);
+    r.number("mass", e.mass);
+    r.choice("placement", e.placement, {"lattice", "random"});
+    r.number("temperature", e.temperature);
+    r.number("equilibrate", e.equilibrate);
+    r.number("restitution", e.restitution);
+    r.choice("restitution_model", e.restitutionModel, {"constant", "mcnamara_falcon", "viscoelastic"});
+    r.number("restitution_speed", e.restitutionSpeed);
+    r.number("wall_restitution", e.wallRestitution);
+    r.number("tangential_restitution", e.tangentialRestitution);
+    r.number("inertia_factor", e.inertiaFactor);
+    r.number("tc", e.tc);
+    if (const toml::node* n = r.node("gravity")) {
+        const auto* a = n->as_array();
+        const std::size_t count = a ? a->size() : 0;
+        if (count != 2 && count != 3) r.diags().error(locOf(*n, r.file()), r.keyPath("gravity"), "expected an array of 2 or 3 components [m/s^2]");
+        else r.numbers("gravity", e.gravity, count);
+    }
+    r.number("growth_rate", e.growthRate);
+    r.number("cell_size", e.cellSize);
+    r.choice("queue", e.queue, {"calendar", "heap", "tree"});
+    r.number("end_tau", e.endTau);
+    r.number("end_collisions", e.endCollisions);
+    r.choice("series", e.series, {"linear", "log"});
+    r.integer("series_points", e.seriesPoints);
+    r.number("series_first", e.seriesFirst);
+    r.boolean("clusters", e.clusters);
+    r.number("cluster_delta", e.clusterDelta);
+    r.boolean("analysis_files", e.analysisFiles);
+}
+
 /// Splits "a.b[2].c" into segments {"a", "b", "[2]", "c"}.
 std::vector<std::string> splitPath(const std::string& key) {
     std::vector<std::string> parts;
@@ -605,7 +657,22 @@ SceneDef buildScene(toml::table& root, const std::string& path, const std::vecto
     withTable(r, "run", [&](TableReader& t) { readRun(t, scene.run); });
     if (!root.get("run")) diags.error({path, 1, 1}, "run", "missing section [run] (needs at least end_time)");
     withTable(r, "dem", [&](TableReader& t) { readDem(t, scene.dem); });
-    if (!root.get("dem")) diags.error({path, 1, 1}, "dem", "missing section [dem] (needs at least dt)");
+    withTable(r, "edmd", [&](TableReader& t) { readEdmd(t, scene.edmd); });
+    scene.hasDem = root.get("dem") != nullptr;
+    scene.hasEdmd = root.get("edmd") != nullptr;
+    if (scene.run.engine == "edmd") {
+        if (!scene.hasEdmd)
+            diags.error({path, 1, 1}, "edmd", "missing section [edmd] (the event-driven gas: count or volume_fraction, radius)");
+        for (const char* section : {"dem", "material", "contact", "shape", "particle", "block", "wall", "spring"})
+            if (const toml::node* n = root.get(section))
+                diags.error(locOf(*n, path), section,
+                            fmt::format("[{}] belongs to the dem engine; run.engine = \"edmd\" takes its particles, box "
+                                        "and walls from [edmd]", section));
+    } else if (!scene.hasDem) {
+        diags.error({path, 1, 1}, "dem", "missing section [dem] (needs at least dt)");
+    }
+    if (scene.run.engine != "edmd" && scene.hasEdmd)
+        diags.error(locOf(*root.get("edmd"), path), "edmd", "[edmd] needs run.engine = \"edmd\"");
     forEachTable(r, "material", [&](TableReader& t, std::size_t) {
         model::MaterialDef m;
         m.loc = t.loc();

@@ -267,6 +267,46 @@ void writeWallsVtp(const std::string& path, const model::WallSet& w, double time
     b.save(path);
 }
 
+void writeGasVtp(const std::string& path, const analysis::PointSet& g, const std::vector<std::uint64_t>& ids,
+                 const std::vector<double>& collisions, double time) {
+    const std::size_t n = g.size();
+    const auto dim = static_cast<std::size_t>(g.dim);
+    std::vector<double> points(3 * n, 0.0), velocity(3 * n, 0.0), speed(n);
+    std::vector<std::int64_t> connectivity(n), offsets(n), id(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        double v2 = 0;
+        for (std::size_t d = 0; d < dim; ++d) {
+            points[3 * i + d] = g.x[dim * i + d];
+            velocity[3 * i + d] = g.v[dim * i + d];
+            v2 += g.v[dim * i + d] * g.v[dim * i + d];
+        }
+        speed[i] = std::sqrt(v2);
+        connectivity[i] = static_cast<std::int64_t>(i);
+        offsets[i] = static_cast<std::int64_t>(i + 1);
+        id[i] = static_cast<std::int64_t>(ids[i]);
+    }
+    VtpBuilder b;
+    b.timeValue(time);
+    b.line(pieceTag(n, n, 0));
+    const std::string in = "        ";
+    b.line("      <PointData Scalars=\"collisions\" Vectors=\"velocity\">");
+    b.array(in, "Int64", "id", 1, id);
+    b.array(in, "Float64", "radius", 1, g.radius);
+    b.array(in, "Float64", "velocity", 3, velocity);
+    b.array(in, "Float64", "speed", 1, speed);
+    b.array(in, "Float64", "collisions", 1, collisions);
+    b.line("      </PointData>");
+    b.line("      <Points>");
+    b.array(in, "Float64", "Points", 3, points);
+    b.line("      </Points>");
+    b.line("      <Verts>");
+    b.array(in, "Int64", "connectivity", 1, connectivity);
+    b.array(in, "Int64", "offsets", 1, offsets);
+    b.line("      </Verts>");
+    b.line("    </Piece>");
+    b.save(path);
+}
+
 std::string snapshotFileName(const std::string& stem, int index) {
     return fmt::format("vtk/{}_{:06d}.vtp", stem, index);
 }

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "io/vtk_reader.hpp"
+#include "analysis/point_set.hpp"
 #include "model/particle_store.hpp"
 #include "model/shape_pool.hpp"
 #include "model/walls.hpp"
@@ -50,6 +51,12 @@ void writeParticlesVtp(const std::string& path, const model::ParticleStore& s, d
 void writeWallsVtp(const std::string& path, const model::WallSet& w, double time);
 
 /// "vtk/<stem>_NNNNNN.vtp" (6-digit snapshot index), relative to the output folder.
+/// Hard-sphere gas snapshot (edmd engine): points in 3D (z = 0 for disks), point data id,
+/// radius [m], velocity [m/s], speed [m/s] and collisions (per particle, for colouring as in the
+/// thesis' Figs. 1.1, 4.4, 5.1).
+void writeGasVtp(const std::string& path, const analysis::PointSet& gas, const std::vector<std::uint64_t>& ids,
+                 const std::vector<double>& collisions, double time);
+
 std::string snapshotFileName(const std::string& stem, int index);
 
 /// ParaView .pvd collection: one DataSet per (time, part). write() rewrites the whole file

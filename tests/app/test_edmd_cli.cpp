@@ -1,0 +1,106 @@
+// SPDX-License-Identifier: MIT
+// `granulab run` with run.engine = "edmd" (issue 5): the outputs of the user contract
+// (summary.json keys, series.csv columns, final.csv, analysis files), a resumed run equal to an
+// uninterrupted one bit for bit, the same scene giving the same result twice, and bad [edmd]
+// input answered with file:line, key, allowed range and exit status 2.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "../support.hpp"
+
+using namespace granulab;
+
+namespace {
+const char* kGas = R"([run]
+engine = "edmd"
+dimension = 2
+seed = 3
+end_time = 4.0
+
+[edmd]
+count = 400
+volume_fraction = 0.3
+radius = 1.0
+restitution = 0.9
+equilibrate = 20
+series_points = 8
+
+[output]
+snapshot_interval = 1.0
+)";
+
+std::string replaceOnce(std::string s, const std::string& from, const std::string& to) {
+    const auto pos = s.find(from);
+    EXPECT_NE(pos, std::string::npos) << from;
+    if (pos != std::string::npos) s.replace(pos, from.size(), to);
+    return s;
+}
+}  // namespace
+
+TEST(EdmdCli, RunWritesTheContractOutputs) {
+    const test::ScratchDir scratch;
+    test::writeText(scratch.path / "gas.toml", kGas);
+    const auto r = test::runGranulab("run gas.toml --out out -q", scratch.path);
+    ASSERT_EQ(r.status, 0) << r.output;
+    const auto js = nlohmann::json::parse(test::readText(scratch.path / "out/summary.json"));
+    for (const char* key : {"engine", "particles", "sim_time", "wall_time_s", "events", "collisions", "events_per_s",
+                            "collisions_per_s", "bytes_per_particle", "theory"})
+        EXPECT_TRUE(js.contains(key)) << key;
+    EXPECT_EQ(js["engine"], "edmd");
+    EXPECT_EQ(js["particles"], 400);
+    EXPECT_DOUBLE_EQ(js["sim_time"].get<double>(), 4.0);
+    EXPECT_GT(js["collisions"].get<double>(), 500);  // ~1.2 per particle and s at nu = 0.3
+    const std::string series = test::readText(scratch.path / "out/series.csv");
+    EXPECT_EQ(series.rfind("time,tau,events,collisions", 0), 0u);
+    for (const char* column : {"temperature_haff", "collision_frequency", "reduced_pressure", "kurtosis", "q_x", "nu_q50"})
+        EXPECT_NE(series.find(column), std::string::npos) << column;
+    EXPECT_EQ(std::count(series.begin(), series.end(), '\n'), 1 + 1 + 8);  // header, t = 0, 8 rows
+    for (const char* file : {"final.csv", "theory.csv", "snapshots.pvd", "checkpoint.bin", "analysis/gr_000000.csv",
+                             "analysis/clusters_000004.csv", "analysis/velocity_000001.csv", "analysis/density_000002.csv"})
+        EXPECT_TRUE(std::filesystem::exists(scratch.path / "out" / file)) << file;
+    EXPECT_EQ(test::readText(scratch.path / "out/final.csv").rfind("id,shape,x,y,vx,vy,omega,radius,mass,collisions\n", 0), 0u);
+}
+
+TEST(EdmdCli, ResumeIsBitForBitAndRunsAreDeterministic) {
+    const test::ScratchDir scratch;
+    test::writeText(scratch.path / "gas.toml", kGas);
+    ASSERT_EQ(test::runGranulab("run gas.toml --out full -q", scratch.path).status, 0);
+    ASSERT_EQ(test::runGranulab("run gas.toml --out again -q", scratch.path).status, 0);
+    EXPECT_EQ(test::readText(scratch.path / "full/final.csv"), test::readText(scratch.path / "again/final.csv"));
+    // Half the run, then resume to the end: same particles and the same series rows.
+    ASSERT_EQ(test::runGranulab("run gas.toml --out part -q --set run.end_time=2.0 --set edmd.series_points=4", scratch.path).status, 0);
+    const auto r = test::runGranulab("run gas.toml --resume part -q", scratch.path);
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_EQ(test::readText(scratch.path / "full/final.csv"), test::readText(scratch.path / "part/final.csv"));
+    EXPECT_EQ(test::readText(scratch.path / "full/series.csv"), test::readText(scratch.path / "part/series.csv"));
+}
+
+TEST(EdmdCli, BadInputNamesTheKeyAndExitsWithTwo) {
+    const test::ScratchDir scratch;
+    struct Case {
+        const char* name;
+        std::string scene;
+        std::vector<std::string> expect;
+    };
+    const Case cases[] = {
+        {"negative_radius", replaceOnce(kGas, "radius = 1.0", "radius = -1.0"), {"edmd.radius", "must be > 0", "(0, inf)"}},
+        {"unknown_key", replaceOnce(kGas, "restitution = 0.9", "restitutoin = 0.9"), {"bad.toml:11", "edmd.restitutoin", "did you mean"}},
+        {"restitution_range", replaceOnce(kGas, "restitution = 0.9", "restitution = 1.5"), {"edmd.restitution", "[0, 1]"}},
+        {"three_of_three", replaceOnce(kGas, "count = 400", "count = 400\nbox = [100.0, 100.0]"), {"exactly two of box, count"}},
+        {"no_end", replaceOnce(kGas, "end_time = 4.0", ""), {"run.end_time", "exactly one run length"}},
+        {"dem_section", std::string(kGas) + "[dem]\ndt = 1e-5\n", {"bad.toml:", "[dem] belongs to the dem engine"}},
+        {"too_dense_lattice", replaceOnce(kGas, "volume_fraction = 0.3", "volume_fraction = 0.85"), {"edmd.volume_fraction", "cannot place"}},
+        {"small_box", replaceOnce(replaceOnce(kGas, "count = 400", "box = [5.0, 5.0]"), "volume_fraction = 0.3", "volume_fraction = 0.1"),
+         {"edmd.box", "must hold 3 diameters"}},
+        {"dimension", replaceOnce(kGas, "dimension = 2", "dimension = 4"), {"run.dimension", "disks (2) or spheres (3)"}},
+        {"end_tau_elastic", replaceOnce(replaceOnce(kGas, "end_time = 4.0", ""), "restitution = 0.9", "restitution = 1.0\nend_tau = 2.0"),
+         {"edmd.end_tau", "restitution below 1"}},
+    };
+    for (const auto& c : cases) {
+        test::writeText(scratch.path / "bad.toml", c.scene);
+        const auto r = test::runGranulab("run bad.toml --out out -q", scratch.path);
+        EXPECT_EQ(r.status, 2) << c.name << ": " << r.output;
+        for (const auto& s : c.expect) EXPECT_NE(r.output.find(s), std::string::npos) << c.name << ": missing '" << s << "' in\n" << r.output;
+    }
+}
