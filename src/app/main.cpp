@@ -6,6 +6,7 @@
 #include <exception>
 #include <fmt/format.h>
 
+#include "app/analyze.hpp"
 #include "app/info.hpp"
 #include "app/render.hpp"
 #include "app/run.hpp"
@@ -15,7 +16,7 @@
 using namespace granulab;
 
 int main(int argc, char** argv) {
-    CLI::App cli{"granulab - granular matter simulation (DEM). See `granulab help`."};
+    CLI::App cli{"granulab - granular matter simulation (DEM and event-driven gases). See `granulab help`."};
     cli.set_version_flag("--version", std::string("granulab ") + kVersion);
     cli.require_subcommand(0, 1);
 
@@ -43,6 +44,28 @@ int main(int argc, char** argv) {
     render->add_option("--width", width, "picture width in pixels")->check(CLI::Range(64, 16384));
     render->add_flag("--quiet,-q", renderQuiet, "no messages");
 
+    app::AnalyzeOptions analyzeOpt;
+    auto* analyze = cli.add_subcommand("analyze", "measure an edmd output folder: g(r), p(v), density, clusters, tau_p");
+    analyze->add_option("dir", analyzeOpt.dir, "output folder of an edmd run")->required();
+    analyze->add_option("--rmax", analyzeOpt.rMaxRadii, "g(r) range in particle radii")->check(CLI::Range(2.5, 1e6));
+    analyze->add_option("--bins", analyzeOpt.bins, "g(r) bins")->check(CLI::Range(4, 1000000));
+    analyze->add_option("--delta", analyzeOpt.delta, "cluster criterion delta/2a (edmd Eq. 5.11)")->check(CLI::Range(1e-6, 1.0));
+    analyze->add_option("--per-bin", analyzeOpt.particlesPerBin, "particles per density bin")->check(CLI::Range(1.0, 1e9));
+    analyze->add_flag("--quiet,-q", analyzeOpt.quiet, "no summary on the terminal");
+
+    app::MasterEquationOptions meOpt;
+    auto* master = cli.add_subcommand("master-equation", "integrate the cluster-population master equation (edmd Eq. 5.31)");
+    master->add_option("--smax", meOpt.params.maxSize, "largest cluster size tracked")->check(CLI::Range(2, 100000));
+    master->add_option("--dim", meOpt.params.dim, "dimension D in the surface factor")->check(CLI::IsMember({2, 3}));
+    master->add_option("--alpha0", meOpt.params.alpha0, "merging prefactor")->check(CLI::PositiveNumber);
+    master->add_option("--beta0", meOpt.params.beta0, "fragmentation prefactor")->check(CLI::NonNegativeNumber);
+    master->add_option("--lambda", meOpt.params.lambda, "dissipation 1 - eps^2")->check(CLI::PositiveNumber);
+    master->add_option("--xi", meOpt.params.xi, "fragment exponent xi")->check(CLI::PositiveNumber);
+    master->add_flag("--symmetric", meOpt.params.symmetricGain, "symmetric Smoluchowski form (1/2 in the gain term)");
+    master->add_option("--t-end", meOpt.tEnd, "end time [1/alpha0]")->check(CLI::PositiveNumber);
+    master->add_option("--points", meOpt.points, "output times (logarithmic)")->check(CLI::Range(2, 100000));
+    master->add_option("--out", meOpt.out, "output prefix");
+
     std::string helpTopic;
     auto* help = cli.add_subcommand("help", "usage, or `help laws` for the contact-law table");
     help->add_option("topic", helpTopic, "laws | restitution");
@@ -61,6 +84,15 @@ int main(int argc, char** argv) {
             return app::runCommand(runOpt);
         }
         if (*info) return app::infoCommand(infoScene, overrides);
+        if (*analyze) return app::analyzeCommand(analyzeOpt);
+        if (*master) {
+            try {
+                return app::masterEquationCommand(meOpt);
+            } catch (const std::invalid_argument& e) {
+                fmt::print(stderr, "granulab master-equation: {}\n", e.what());
+                return app::kExitBadInput;
+            }
+        }
         if (*render) {
             if (!png) {
                 fmt::print(stderr, "granulab render: choose an output format (--png)\n");

@@ -461,6 +461,8 @@ int EdmdRun<D, Queue>::run() {
     js["particles"] = n;
     js["volume_fraction"] = m_setup.volumeFraction;
     js["box"] = std::vector<Real>(m_setup.config.box.begin(), m_setup.config.box.begin() + D);
+    js["periodic"] = std::vector<bool>(m_setup.config.periodic.begin(), m_setup.config.periodic.begin() + D);
+    js["radius"] = E.radius;
     js["queue"] = E.queue;
     const auto cells = engine.cellsPerAxis();
     js["cells_per_axis"] = std::vector<int>(cells.begin(), cells.begin() + D);

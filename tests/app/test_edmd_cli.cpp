@@ -104,3 +104,26 @@ TEST(EdmdCli, BadInputNamesTheKeyAndExitsWithTwo) {
         for (const auto& s : c.expect) EXPECT_NE(r.output.find(s), std::string::npos) << c.name << ": missing '" << s << "' in\n" << r.output;
     }
 }
+
+TEST(EdmdCli, AnalyzeMeasuresTheFinalStateAndMasterEquationWritesItsCurves) {
+    const test::ScratchDir scratch;
+    test::writeText(scratch.path / "gas.toml", kGas);
+    ASSERT_EQ(test::runGranulab("run gas.toml --out out -q", scratch.path).status, 0);
+    const auto r = test::runGranulab("analyze out", scratch.path);
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("q_x"), std::string::npos) << r.output;
+    const auto js = nlohmann::json::parse(test::readText(scratch.path / "out/analysis/final_summary.json"));
+    EXPECT_EQ(js["particles"], 400);
+    // A gas at area fraction 0.3: the contact value is near Henderson's 1.77 (loose: 400 disks,
+    // one snapshot, slightly cooled and correlated by eps = 0.9).
+    EXPECT_GT(js["g_contact"].get<double>(), 1.2);
+    EXPECT_LT(js["g_contact"].get<double>(), 2.6);
+    EXPECT_NEAR(js["M1"].get<double>() * js["clusters"].get<double>(), 400, 1e-9);  // M1 = N / n_tot
+    EXPECT_EQ(test::runGranulab("analyze missing_folder", scratch.path).status, 2);
+    const auto m = test::runGranulab("master-equation --lambda 4 --xi 2 --smax 50 --t-end 20 --points 5 --out me", scratch.path);
+    ASSERT_EQ(m.status, 0) << m.output;
+    const std::string moments = test::readText(scratch.path / "me_moments.csv");
+    EXPECT_EQ(moments.rfind("t,M1,M2,total,mass\n", 0), 0u);
+    EXPECT_EQ(std::count(moments.begin(), moments.end(), '\n'), 6);
+    EXPECT_EQ(test::runGranulab("master-equation --lambda -1", scratch.path).status, 2);
+}
