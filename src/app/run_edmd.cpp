@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fmt/format.h>
 #include <fstream>
@@ -410,22 +411,26 @@ int EdmdRun<D, Queue>::run() {
     progress.finish(byCollisions ? static_cast<double>(engine.stats().collisions) : engine.time(),
                     static_cast<std::int64_t>(engine.stats().events));
 
-    // final.csv: one row per particle.
+    // final.csv: one row per particle, streamed (a million-particle text would not fit a string).
     {
-        std::string text = D == 2 ? "id,shape,x,y,vx,vy,omega,radius,mass,collisions\n"
-                                  : "id,shape,x,y,z,vx,vy,vz,omega_x,omega_y,omega_z,radius,mass,collisions\n";
+        const std::string path = m_dir + "/final.csv", tmp = path + ".tmp";
+        std::FILE* f = std::fopen(tmp.c_str(), "w");
+        if (!f) throw std::runtime_error("cannot write " + tmp);
+        fmt::print(f, "{}", D == 2 ? "id,shape,x,y,vx,vy,omega,radius,mass,collisions\n"
+                                   : "id,shape,x,y,z,vx,vy,vz,omega_x,omega_y,omega_z,radius,mass,collisions\n");
         for (std::uint32_t i = 0; i < n; ++i) {
             const auto x = engine.positionNow(i);
             const auto v = engine.velocityNow(i);
             const auto w = engine.omega(i);
-            text += fmt::format("{},{}", i, D == 2 ? "disk" : "sphere");
-            for (int d = 0; d < D; ++d) text += fmt::format(",{:.17g}", x[d]);
-            for (int d = 0; d < D; ++d) text += fmt::format(",{:.17g}", v[d]);
-            if (D == 2) text += fmt::format(",{:.17g}", w[2]);
-            else text += fmt::format(",{:.17g},{:.17g},{:.17g}", w[0], w[1], w[2]);
-            text += fmt::format(",{:.17g},{:.17g},{}\n", engine.radius(i), engine.mass(i), engine.collisions(i));
+            fmt::print(f, "{},{}", i, D == 2 ? "disk" : "sphere");
+            for (int d = 0; d < D; ++d) fmt::print(f, ",{:.17g}", x[d]);
+            for (int d = 0; d < D; ++d) fmt::print(f, ",{:.17g}", v[d]);
+            if (D == 2) fmt::print(f, ",{:.17g}", w[2]);
+            else fmt::print(f, ",{:.17g},{:.17g},{:.17g}", w[0], w[1], w[2]);
+            fmt::print(f, ",{:.17g},{:.17g},{}\n", engine.radius(i), engine.mass(i), engine.collisions(i));
         }
-        io::writeFileAtomically(m_dir + "/final.csv", text);
+        if (std::fclose(f) != 0) throw std::runtime_error("cannot write " + tmp);
+        fs::rename(tmp, path);
     }
     // Kinetic-theory reference curves (spec 7 item 31) for comparison plots.
     nlohmann::json theory;
