@@ -2,6 +2,11 @@
 // Serial event-driven engine (edmd spec sections 2.1-2.8, 2.10): event loop, event computation
 // over the 3^D neighbour cells, cell crossings with periodic wrap, wall collisions, annulled
 // collisions, growing spheres with re-gridding, checkpoints.
+// Performance layout (spec 8, issue 5): particles live in slots sorted by cell (counting sort
+// every kSortEvery N events, deterministic since it is keyed on the event count), so that a
+// neighbour scan reads a few contiguous runs of memory; cell lists are singly linked through
+// the 64-byte State; cell coordinates are stored per particle (no index decoding); pairs that
+// cannot beat the earliest candidate are rejected before the square root.
 #include "edmd/engine.hpp"
 
 #include <algorithm>
@@ -15,8 +20,6 @@
 namespace granulab::edmd {
 
 namespace {
-constexpr std::uint32_t kNone = 0xFFFFFFFFu;
-
 Vec3 lift(const VecD<2>& a) noexcept { return {{a[0], a[1], 0}}; }
 Vec3 lift(const VecD<3>& a) noexcept { return a; }
 template <int D>
@@ -30,24 +33,38 @@ VecD<D> lower(const Vec3& a) noexcept {
 template <int D, class Queue>
 Engine<D, Queue>::Engine(EngineConfig config, std::vector<V> x, std::vector<V> v, std::vector<Real> radius,
                          std::vector<Real> mass)
-    : m_config(config), m_mass(std::move(mass)) {
+    : m_config(config) {
     const auto n = static_cast<std::uint32_t>(x.size());
-    if (v.size() != n || radius.size() != n || m_mass.size() != n)
+    if (v.size() != n || radius.size() != n || mass.size() != n)
         throw std::invalid_argument("edmd::Engine: position, velocity, radius and mass counts differ");
+    if (x.size() >= kMaxParticles) throw std::invalid_argument("edmd::Engine: too many particles");
     for (int d = 0; d < D; ++d)
         if (!(m_config.box[d] > 0)) throw std::invalid_argument("edmd::Engine: box edges must be positive");
     if (m_config.growthRate != 0)
         for (int d = 0; d < D; ++d)
             if (!m_config.periodic[d]) throw std::invalid_argument("edmd::Engine: growing spheres need a periodic box");
     m_s.resize(n);
-    for (std::uint32_t i = 0; i < n; ++i) m_s[i] = {x[i], v[i], 0.0, radius[i]};
-    m_maxRadius0 = n ? *std::max_element(radius.begin(), radius.end()) : 0;
+    for (std::uint32_t i = 0; i < n; ++i) {
+        m_s[i].x = x[i];
+        m_s[i].v = v[i];
+    }
+    // Equal radii or masses are stored once (memory, and one load less per neighbour).
+    if (n) {
+        m_uniformRadius = radius[0];
+        m_uniformMass = mass[0];
+    }
+    if (std::any_of(radius.begin(), radius.end(), [&](Real a) { return a != m_uniformRadius; })) m_radius = std::move(radius);
+    if (std::any_of(mass.begin(), mass.end(), [&](Real m) { return m != m_uniformMass; })) m_mass = std::move(mass);
+    m_maxRadius0 = m_radius.empty() ? (n ? m_uniformRadius : 0) : *std::max_element(m_radius.begin(), m_radius.end());
     for (int d = 0; d < D; ++d) m_gravity = m_gravity || m_config.gravity[d] != 0;
     if (m_config.rough()) m_omega.assign(n, Vec3{});
-    m_counter.assign(n, 0);
     if (m_config.tc > 0) m_lastCollision.assign(n, -kNoEvent);
     m_event.assign(n, Event{});
+    m_id.resize(n);
+    m_slot.resize(n);
+    for (std::uint32_t i = 0; i < n; ++i) m_id[i] = m_slot[i] = i;
     buildCells();
+    sortParticles(false);
     rescheduleAll();
 }
 
@@ -69,12 +86,14 @@ void Engine<D, Queue>::buildCells() {
     std::size_t cellCount = 1;
     for (int d = 0; d < D; ++d) {
         const Real L = m_config.box[d];
-        int cells = edge > 0 ? static_cast<int>(std::min<Real>(std::floor(L / edge), 1 << 20)) : 1;
+        // Fewer cells than the edge allows is always correct (cells only need to exceed 2a).
+        int cells = edge > 0 ? static_cast<int>(std::min<Real>(std::floor(L / edge), kMaxCellsPerAxis)) : 1;
         if (m_config.periodic[d] && cells < 3)
             throw std::invalid_argument("edmd::Engine: a periodic axis must hold at least 3 cells of one diameter "
                                         "(box edge " + std::to_string(L) + " m, diameter " + std::to_string(2 * amax) + " m)");
         cells = std::max(cells, 1);
         m_cells[d] = cells;
+        m_stride[d] = static_cast<std::uint32_t>(cellCount);
         m_cellEdge[d] = L / cells;
         m_invCellEdge[d] = cells / L;
         cellCount *= static_cast<std::size_t>(cells);
@@ -88,61 +107,103 @@ void Engine<D, Queue>::buildCells() {
         m_regridTime = (0.5 * minEdge - m_maxRadius0) / m_config.growthRate;
     }
     m_head.assign(cellCount, kNone);
-    m_cell.assign(n, 0);
-    m_next.assign(n, kNone);
-    m_prev.assign(n, kNone);
-    for (std::uint32_t i = 0; i < n; ++i) {
-        int c[D];
+    m_head.shrink_to_fit();
+    m_cellOf.resize(n);
+    for (std::uint32_t s = 0; s < n; ++s)
         for (int d = 0; d < D; ++d)
-            c[d] = std::clamp(static_cast<int>(std::floor(m_s[i].x[d] * m_invCellEdge[d])), 0, m_cells[d] - 1);
-        insertIntoCell(i, cellIndex(c));
+            m_cellOf[s][d] = static_cast<std::uint16_t>(
+                std::clamp(static_cast<int>(std::floor(m_s[s].x[d] * m_invCellEdge[d])), 0, m_cells[d] - 1));
+}
+
+template <int D, class Queue>
+void Engine<D, Queue>::sortParticles(bool requeue) {
+    const auto n = size();
+    m_nextSort = m_stats.events + kSortEvery * std::max<std::uint64_t>(n, 1);
+    if (n == 0) return;
+    // Counting sort by cell index (stable): newSlot[s] is the slot s moves to. m_head serves as
+    // the bucket counter; the lists are rebuilt below.
+    std::vector<std::uint32_t> newSlot(n);
+    std::fill(m_head.begin(), m_head.end(), 0u);
+    for (std::uint32_t s = 0; s < n; ++s) ++m_head[cellIndex(m_cellOf[s])];
+    std::uint32_t sum = 0;
+    for (auto& h : m_head) {
+        const std::uint32_t c = h;
+        h = sum;
+        sum += c;
+    }
+    for (std::uint32_t s = 0; s < n; ++s) newSlot[s] = m_head[cellIndex(m_cellOf[s])]++;
+    // Slot references: collision partners, the id map and the queue times.
+    for (auto& ev : m_event)
+        if (ev.partner < kMaxParticles) ev.partner = newSlot[ev.partner];
+    for (auto& s : m_slot) s = newSlot[s];
+    std::vector<Real> times;
+    if (requeue) {
+        times.resize(n);
+        for (std::uint32_t s = 0; s < n; ++s) times[newSlot[s]] = m_queue.time(s);
+    }
+    // Permute every per-slot array in place along the cycles of newSlot (no second copy of
+    // the states).
+    for (std::uint32_t s = 0; s < n; ++s)
+        while (newSlot[s] != s) {
+            const std::uint32_t d = newSlot[s];
+            std::swap(m_s[s], m_s[d]);
+            std::swap(m_event[s], m_event[d]);
+            std::swap(m_cellOf[s], m_cellOf[d]);
+            std::swap(m_id[s], m_id[d]);
+            if (!m_radius.empty()) std::swap(m_radius[s], m_radius[d]);
+            if (!m_mass.empty()) std::swap(m_mass[s], m_mass[d]);
+            if (!m_omega.empty()) std::swap(m_omega[s], m_omega[d]);
+            if (!m_lastCollision.empty()) std::swap(m_lastCollision[s], m_lastCollision[d]);
+            std::swap(newSlot[s], newSlot[d]);
+        }
+    // Cell lists in ascending slot order (memory-forward traversal).
+    std::fill(m_head.begin(), m_head.end(), kNone);
+    for (std::uint32_t s = n; s-- > 0;) {
+        const std::uint32_t c = cellIndex(m_cellOf[s]);
+        m_s[s].next = m_head[c];
+        m_head[c] = s;
+    }
+    if (requeue) {
+        m_queue.reset(n);
+        for (std::uint32_t s = 0; s < n; ++s) m_queue.set(s, times[s]);
     }
 }
 
 template <int D, class Queue>
 void Engine<D, Queue>::rescheduleAll() noexcept {
     m_queue.reset(size());
-    for (std::uint32_t i = 0; i < size(); ++i) schedule(i);
+    for (std::uint32_t s = 0; s < size(); ++s) schedule(s);
 }
 
 template <int D, class Queue>
 void Engine<D, Queue>::regrid() {
-    for (std::uint32_t i = 0; i < size(); ++i) advance(i, m_now);
+    for (std::uint32_t s = 0; s < size(); ++s) advance(s, m_now);
     buildCells();
+    sortParticles(false);
     rescheduleAll();
     ++m_stats.regrids;
 }
 
 template <int D, class Queue>
-std::uint32_t Engine<D, Queue>::cellIndex(const int c[D]) const noexcept {
+std::uint32_t Engine<D, Queue>::cellIndex(const CellCoords& c) const noexcept {
     std::uint32_t k = 0;
-    for (int d = D - 1; d >= 0; --d) k = k * static_cast<std::uint32_t>(m_cells[d]) + static_cast<std::uint32_t>(c[d]);
+    for (int d = 0; d < D; ++d) k += m_stride[d] * c[d];
     return k;
 }
 
 template <int D, class Queue>
-void Engine<D, Queue>::cellCoords(std::uint32_t i, int c[D]) const noexcept {
-    std::uint32_t k = m_cell[i];
-    for (int d = 0; d < D; ++d) {
-        c[d] = static_cast<int>(k % static_cast<std::uint32_t>(m_cells[d]));
-        k /= static_cast<std::uint32_t>(m_cells[d]);
-    }
+void Engine<D, Queue>::linkCell(std::uint32_t s) noexcept {
+    std::uint32_t& head = m_head[cellIndex(m_cellOf[s])];
+    m_s[s].next = head;
+    head = s;
 }
 
 template <int D, class Queue>
-void Engine<D, Queue>::insertIntoCell(std::uint32_t i, std::uint32_t cell) noexcept {
-    m_cell[i] = cell;
-    m_prev[i] = kNone;
-    m_next[i] = m_head[cell];
-    if (m_head[cell] != kNone) m_prev[m_head[cell]] = i;
-    m_head[cell] = i;
-}
-
-template <int D, class Queue>
-void Engine<D, Queue>::removeFromCell(std::uint32_t i) noexcept {
-    if (m_prev[i] != kNone) m_next[m_prev[i]] = m_next[i];
-    else m_head[m_cell[i]] = m_next[i];
-    if (m_next[i] != kNone) m_prev[m_next[i]] = m_prev[i];
+void Engine<D, Queue>::unlinkCell(std::uint32_t s) noexcept {
+    // Singly linked: walk the (short) list of the cell to the predecessor.
+    std::uint32_t* link = &m_head[cellIndex(m_cellOf[s])];
+    while (*link != s) link = &m_s[*link].next;
+    *link = m_s[s].next;
 }
 
 template <int D, class Queue>
@@ -163,7 +224,17 @@ typename Engine<D, Queue>::V Engine<D, Queue>::separation(std::uint32_t i, std::
 
 template <int D, class Queue>
 typename Engine<D, Queue>::V Engine<D, Queue>::positionNow(std::uint32_t i) const noexcept {
-    const State& p = m_s[i];
+    return positionSlot(m_slot[i]);
+}
+
+template <int D, class Queue>
+typename Engine<D, Queue>::V Engine<D, Queue>::velocityNow(std::uint32_t i) const noexcept {
+    return velocitySlot(m_slot[i]);
+}
+
+template <int D, class Queue>
+typename Engine<D, Queue>::V Engine<D, Queue>::positionSlot(std::uint32_t s) const noexcept {
+    const State& p = m_s[s];
     const Real dt = m_now - p.tst;
     V x = p.x + p.v * dt;
     for (int d = 0; d < D; ++d) {
@@ -177,16 +248,16 @@ typename Engine<D, Queue>::V Engine<D, Queue>::positionNow(std::uint32_t i) cons
 }
 
 template <int D, class Queue>
-typename Engine<D, Queue>::V Engine<D, Queue>::velocityNow(std::uint32_t i) const noexcept {
-    V v = m_s[i].v;
+typename Engine<D, Queue>::V Engine<D, Queue>::velocitySlot(std::uint32_t s) const noexcept {
+    V v = m_s[s].v;
     if (m_gravity)
-        for (int d = 0; d < D; ++d) v[d] += m_config.gravity[d] * (m_now - m_s[i].tst);
+        for (int d = 0; d < D; ++d) v[d] += m_config.gravity[d] * (m_now - m_s[s].tst);
     return v;
 }
 
 template <int D, class Queue>
-void Engine<D, Queue>::advance(std::uint32_t i, Real t) noexcept {  // free flight, edmd Eq. 2.2-2.4
-    State& p = m_s[i];
+void Engine<D, Queue>::advance(std::uint32_t s, Real t) noexcept {  // free flight, edmd Eq. 2.2-2.4
+    State& p = m_s[s];
     const Real dt = t - p.tst;
     p.x = p.x + p.v * dt;
     if (m_gravity)
@@ -198,19 +269,22 @@ void Engine<D, Queue>::advance(std::uint32_t i, Real t) noexcept {  // free flig
 }
 
 template <int D, class Queue>
-void Engine<D, Queue>::schedule(std::uint32_t i) noexcept {
+void Engine<D, Queue>::schedule(std::uint32_t s) noexcept {
     const bool growing = m_config.growthRate != 0;
-    if (m_gravity) growing ? scheduleImpl<true, true>(i) : scheduleImpl<true, false>(i);
-    else growing ? scheduleImpl<false, true>(i) : scheduleImpl<false, false>(i);
+    const bool uniform = m_radius.empty();
+    if (!m_gravity && !growing) uniform ? scheduleImpl<false, false, true>(s) : scheduleImpl<false, false, false>(s);
+    else if (m_gravity) growing ? scheduleImpl<true, true, false>(s) : scheduleImpl<true, false, false>(s);
+    else scheduleImpl<false, true, false>(s);
 }
 
 template <int D, class Queue>
-template <bool Gravity, bool Growing>
+template <bool Gravity, bool Growing, bool Uniform>
 void Engine<D, Queue>::scheduleImpl(std::uint32_t i) noexcept {  // spec 2.8: keep only the earliest
-    int c[D];
-    cellCoords(i, c);
-    const State& p = m_s[i];
-    const Real dt0 = m_now - p.tst;
+    const CellCoords c = m_cellOf[i];
+    const State* const st = m_s.data();
+    const State& p = st[i];
+    const Real now = m_now;
+    const Real dt0 = now - p.tst;
     V xi = p.x + p.v * dt0;
     V vi = p.v;
     if constexpr (Gravity)
@@ -219,39 +293,41 @@ void Engine<D, Queue>::scheduleImpl(std::uint32_t i) noexcept {  // spec 2.8: ke
             vi[d] += m_config.gravity[d] * dt0;
         }
     const Real growth = m_config.growthRate;
-    const Real ri = Growing ? p.radius + growth * m_now : p.radius;
+    const Real ri = Uniform ? m_uniformRadius : radiusSlot(i);
     Real best = kNoEvent;
     Event ev;
     // Cell faces and walls, per axis (edmd Eq. 2.22-2.25).
     for (int d = 0; d < D; ++d) {
         const Real g = Gravity ? m_config.gravity[d] : 0;
         const bool periodic = m_config.periodic[d];
-        const Real lo = c[d] * m_cellEdge[d];
-        const Real hi = c[d] + 1 == m_cells[d] ? m_config.box[d] : (c[d] + 1) * m_cellEdge[d];
-        if (periodic || c[d] + 1 < m_cells[d]) {
+        const int cd = c[d];
+        const Real lo = cd * m_cellEdge[d];
+        const Real hi = cd + 1 == m_cells[d] ? m_config.box[d] : (cd + 1) * m_cellEdge[d];
+        const auto up = static_cast<std::uint32_t>(2 * d + 1), down = static_cast<std::uint32_t>(2 * d);
+        if (periodic || cd + 1 < m_cells[d]) {
             const Real dt = closingTime(hi - xi[d], vi[d], g);
             if (dt < best) {
                 best = dt;
-                ev = {static_cast<std::uint32_t>(2 * d + 1), 0, Kind::Cell};
+                ev = {kCellBase + up, 0};
             }
         } else {  // upper wall: contact when the centre is a below it
             const Real dt = closingTime(m_config.box[d] - ri - xi[d], vi[d], g);
             if (dt < best) {
                 best = dt;
-                ev = {static_cast<std::uint32_t>(2 * d + 1), 0, Kind::Wall};
+                ev = {kWallBase + up, 0};
             }
         }
-        if (periodic || c[d] > 0) {
+        if (periodic || cd > 0) {
             const Real dt = closingTime(xi[d] - lo, -vi[d], -g);
             if (dt < best) {
                 best = dt;
-                ev = {static_cast<std::uint32_t>(2 * d), 0, Kind::Cell};
+                ev = {kCellBase + down, 0};
             }
         } else {
             const Real dt = closingTime(xi[d] - ri, -vi[d], -g);
             if (dt < best) {
                 best = dt;
-                ev = {static_cast<std::uint32_t>(2 * d), 0, Kind::Wall};
+                ev = {kWallBase + down, 0};
             }
         }
     }
@@ -259,66 +335,99 @@ void Engine<D, Queue>::scheduleImpl(std::uint32_t i) noexcept {  // spec 2.8: ke
     // a periodic boundary is seen through its image: shift[d] is added to its particles'
     // positions (applied to x_i instead), so the pair that will collide through the boundary is
     // found even while its minimum image is still the other one (spec 2.4 [I], image shifts).
-    int neighbour[D][3], count[D];
-    Real shift[D][3];
+    std::uint32_t offset[3][3] = {};  // cell index contribution per axis and neighbour
+    Real shift[3][3] = {};
+    int count[3] = {1, 1, 1};
     for (int d = 0; d < D; ++d) {
+        const int cd = c[d];
         int k = 0;
-        if (c[d] > 0) {
-            neighbour[d][k] = c[d] - 1;
+        if (cd > 0) {
+            offset[d][k] = m_stride[d] * static_cast<std::uint32_t>(cd - 1);
             shift[d][k++] = 0;
         } else if (m_config.periodic[d]) {
-            neighbour[d][k] = m_cells[d] - 1;
+            offset[d][k] = m_stride[d] * static_cast<std::uint32_t>(m_cells[d] - 1);
             shift[d][k++] = -m_config.box[d];
         }
-        neighbour[d][k] = c[d];
+        offset[d][k] = m_stride[d] * static_cast<std::uint32_t>(cd);
         shift[d][k++] = 0;
-        if (c[d] + 1 < m_cells[d]) {
-            neighbour[d][k] = c[d] + 1;
+        if (cd + 1 < m_cells[d]) {
+            offset[d][k] = m_stride[d] * static_cast<std::uint32_t>(cd + 1);
             shift[d][k++] = 0;
         } else if (m_config.periodic[d]) {
-            neighbour[d][k] = 0;
+            offset[d][k] = 0;
             shift[d][k++] = m_config.box[d];
         }
         count[d] = k;
     }
-    int offset[D] = {};
     const Real sumGrowth = 2 * growth;
-    for (;;) {
-        int nc[D];
-        V xiImage = xi;
-        for (int d = 0; d < D; ++d) {
-            nc[d] = neighbour[d][offset[d]];
-            xiImage[d] -= shift[d][offset[d]];
-        }
-        for (std::uint32_t j = m_head[cellIndex(nc)]; j != kNone; j = m_next[j]) {
-            if (j == i) continue;
-            const State& q = m_s[j];
-            const Real dtj = m_now - q.tst;
-            V xj = q.x + q.v * dtj;
-            V vj = q.v;
-            if constexpr (Gravity)
-                for (int d = 0; d < D; ++d) {
-                    xj[d] += 0.5 * m_config.gravity[d] * dtj * dtj;
-                    vj[d] += m_config.gravity[d] * dtj;
+    const Real growthNow = growth * now;
+    const std::uint32_t* const head = m_head.data();
+    constexpr Real kSafe = 1 + 1e-12;
+    Real bound = 2 * best * kSafe;
+    // First pass: the heads of all neighbour cells, and a prefetch of their first particles,
+    // so that the (mostly L2-missing) neighbour lines load in parallel, not one after another.
+    std::uint32_t first[27];
+    {
+        int n = 0;
+        for (int kz = 0; kz < count[2]; ++kz)
+            for (int ky = 0; ky < count[1]; ++ky)
+                for (int kx = 0; kx < count[0]; ++kx) {
+                    const std::uint32_t j = head[offset[0][kx] + offset[1][ky] + offset[2][kz]];
+                    first[n++] = j;
+                    if (j != kNone) __builtin_prefetch(&st[j]);
                 }
-            Real dt;
-            if constexpr (Growing)
-                dt = growingPairCollisionTime(xiImage - xj, vi - vj, ri + q.radius + growth * m_now, sumGrowth);
-            else
-                dt = pairCollisionTime(xiImage - xj, vi - vj, ri + q.radius);
-            if (dt < best || (dt == best && ev.kind == Kind::Collision && j < ev.partner)) {
-                best = dt;
-                ev = {j, m_counter[j], Kind::Collision};
-            }
-        }
-        int d = 0;
-        while (d < D && ++offset[d] >= count[d]) offset[d++] = 0;
-        if (d == D) break;
     }
+    int cellNo = 0;
+    for (int kz = 0; kz < count[2]; ++kz)
+        for (int ky = 0; ky < count[1]; ++ky)
+            for (int kx = 0; kx < count[0]; ++kx) {
+                V xiImage = xi;
+                xiImage[0] -= shift[0][kx];
+                xiImage[1] -= shift[1][ky];
+                if constexpr (D == 3) xiImage[2] -= shift[2][kz];
+                for (std::uint32_t j = first[cellNo++]; j != kNone; j = st[j].next) {
+                    // i itself needs no test: r = w = 0 exactly, so b = 0 and no event.
+                    const State& q = st[j];
+                    const Real dtj = now - q.tst;
+                    V r, w;
+                    for (int d = 0; d < D; ++d) {
+                        Real xj = q.x[d] + q.v[d] * dtj;
+                        Real vj = q.v[d];
+                        if constexpr (Gravity) {
+                            xj += 0.5 * m_config.gravity[d] * dtj * dtj;
+                            vj += m_config.gravity[d] * dtj;
+                        }
+                        r[d] = xiImage[d] - xj;
+                        w[d] = vi[d] - vj;
+                    }
+                    Real dt;
+                    if constexpr (Growing) {
+                        if (j == i) continue;
+                        dt = growingPairCollisionTime(r, w, ri + (m_radius.empty() ? m_uniformRadius : m_radius[j]) + growthNow, sumGrowth);
+                    } else {
+                        // One branch on a cheap test first: only approaching pairs (b < 0)
+                        // whose root can beat `best` need the square root and the division
+                        // (slow on this hardware). The root c/(-b + sqrt(disc)) is at least
+                        // c/(-2b) since disc <= b^2; kSafe keeps round-off on the safe side, so
+                        // only pairs that would lose anyway are skipped.
+                        const Real b = dot(r, w);
+                        const Real sum = ri + (Uniform ? m_uniformRadius : m_radius.empty() ? m_uniformRadius : m_radius[j]);
+                        const Real cc = dot(r, r) - sum * sum;
+                        if (!((b < 0) & (cc <= -b * bound))) continue;  // also i itself (b = 0)
+                        const Real disc = b * b - dot(w, w) * cc;
+                        if (!(disc >= 0)) continue;  // misses
+                        dt = cc <= 0 ? 0 : cc / (-b + std::sqrt(disc));  // as pairCollisionTime
+                    }
+                    if (dt < best || (dt == best && ev.partner < kMaxParticles && j < ev.partner)) {
+                        best = dt;
+                        bound = 2 * best * kSafe;
+                        ev = {j, q.counter};
+                    }
+                }
+            }
     m_event[i] = ev;
-    m_queue.set(i, ev.kind == Kind::None ? kNoEvent : m_now + best);
+    m_queue.set(i, ev.partner == kNone ? kNoEvent : now + best);
 }
-
 template <int D, class Queue>
 bool Engine<D, Queue>::elasticByTc(std::uint32_t i, std::uint32_t j, Real t) const noexcept {
     if (m_lastCollision.empty()) return false;
@@ -334,7 +443,7 @@ void Engine<D, Queue>::collide(std::uint32_t i, std::uint32_t j, Real t) noexcep
     const V r = minimumImage(a.x - b.x);
     const Real distance = std::sqrt(dot(r, r));
     const V k = r * (1 / distance);  // from j to i (erratum 1)
-    const Real mi = m_mass[i], mj = m_mass[j];
+    const Real mi = massSlot(i), mj = massSlot(j);
     // Approach speed of the surfaces: normal relative speed plus the growth of both radii.
     const Real approach = -dot(a.v - b.v, k) + 2 * m_config.growthRate;
     const bool tcElastic = elasticByTc(i, j, t);
@@ -348,7 +457,7 @@ void Engine<D, Queue>::collide(std::uint32_t i, std::uint32_t j, Real t) noexcep
         after = 0.5 * (mi * dot(a.v, a.v) + mj * dot(b.v, b.v));
     } else {
         const Real z = m_config.inertiaFactor;
-        const Real ai = radius(i), aj = radius(j);
+        const Real ai = radiusSlot(i), aj = radiusSlot(j);
         Vec3 vi = lift(a.v), vj = lift(b.v);
         Vec3& wi = m_omega[i];
         Vec3& wj = m_omega[j];
@@ -363,8 +472,8 @@ void Engine<D, Queue>::collide(std::uint32_t i, std::uint32_t j, Real t) noexcep
     m_dissipated += before - after;
     m_virial += distance * normalImpulse;  // r_ij . J_i (edmd spec 7 item 27)
     if (!m_lastCollision.empty()) m_lastCollision[i] = m_lastCollision[j] = t;
-    ++m_counter[i];
-    ++m_counter[j];
+    ++a.counter;
+    ++b.counter;
     ++m_stats.collisions;
     if (tcElastic) ++m_stats.tcElastic;
 }
@@ -379,12 +488,12 @@ void Engine<D, Queue>::collideWall(std::uint32_t i, std::uint32_t wall, Real t) 
     if (vn > 0) {  // a round-off touch while leaving changes nothing
         const bool tcElastic = elasticByTc(i, kNone, t);
         const Real eps = tcElastic ? 1 : m_config.wallRestitution;
-        m_dissipated += 0.5 * m_mass[i] * (1 - eps * eps) * vn * vn;
+        m_dissipated += 0.5 * massSlot(i) * (1 - eps * eps) * vn * vn;
         p.v[d] = -eps * p.v[d];
         if (tcElastic) ++m_stats.tcElastic;
     }
     if (!m_lastCollision.empty()) m_lastCollision[i] = t;
-    ++m_counter[i];
+    ++p.counter;
     ++m_stats.wallCollisions;
 }
 
@@ -392,18 +501,17 @@ template <int D, class Queue>
 void Engine<D, Queue>::crossCell(std::uint32_t i, std::uint32_t face) noexcept {  // spec 2.7
     const int d = static_cast<int>(face / 2);
     const bool up = face % 2 == 1;
-    int c[D];
-    cellCoords(i, c);
-    c[d] += up ? 1 : -1;
-    if (c[d] == m_cells[d]) {
-        c[d] = 0;
+    unlinkCell(i);
+    int c = m_cellOf[i][d] + (up ? 1 : -1);
+    if (c == m_cells[d]) {
+        c = 0;
         m_s[i].x[d] -= m_config.box[d];
-    } else if (c[d] < 0) {
-        c[d] = m_cells[d] - 1;
+    } else if (c < 0) {
+        c = m_cells[d] - 1;
         m_s[i].x[d] += m_config.box[d];
     }
-    removeFromCell(i);
-    insertIntoCell(i, cellIndex(c));
+    m_cellOf[i][d] = static_cast<std::uint16_t>(c);
+    linkCell(i);
     ++m_stats.cellCrossings;
 }
 
@@ -430,35 +538,35 @@ std::uint64_t Engine<D, Queue>::run(Real tEnd, std::uint64_t collisionLimit) {
             regrid();
             continue;
         }
+        if (m_stats.events >= m_nextSort) {  // keyed on the event count: deterministic
+            sortParticles(true);
+            continue;
+        }
         const std::uint32_t i = m_queue.top();
         m_now = t;
         const Event ev = m_event[i];
         ++done;
         ++m_stats.events;
-        switch (ev.kind) {
-            case Kind::Collision: {
-                const std::uint32_t j = ev.partner;
-                if (m_counter[j] != ev.partnerCounter) {  // annulled (spec 2.6): free flight, new event
-                    ++m_stats.annulled;
-                    advance(i, t);
-                    schedule(i);
-                    break;
-                }
-                collide(i, j, t);
-                schedule(i);
-                schedule(j);
-                break;
-            }
-            case Kind::Cell:
+        if (ev.partner < kMaxParticles) {
+            const std::uint32_t j = ev.partner;
+            if (m_s[j].counter != ev.partnerCounter) {  // annulled (spec 2.6): free flight, new event
+                ++m_stats.annulled;
                 advance(i, t);
-                crossCell(i, ev.partner);
                 schedule(i);
-                break;
-            case Kind::Wall:
-                collideWall(i, ev.partner, t);
-                schedule(i);
-                break;
-            case Kind::None: schedule(i); break;
+                continue;
+            }
+            collide(i, j, t);
+            schedule(i);
+            schedule(j);
+        } else if (ev.partner >= kCellBase && ev.partner != kNone) {
+            advance(i, t);
+            crossCell(i, ev.partner - kCellBase);
+            schedule(i);
+        } else if (ev.partner >= kWallBase && ev.partner < kCellBase) {
+            collideWall(i, ev.partner - kWallBase, t);
+            schedule(i);
+        } else {
+            schedule(i);
         }
     }
     return done;
@@ -466,19 +574,21 @@ std::uint64_t Engine<D, Queue>::run(Real tEnd, std::uint64_t collisionLimit) {
 
 template <int D, class Queue>
 void Engine<D, Queue>::restartClock() {
-    for (std::uint32_t i = 0; i < size(); ++i) {
-        advance(i, m_now);
-        m_s[i].tst = 0;
-        m_s[i].radius += m_config.growthRate * m_now;
+    for (std::uint32_t s = 0; s < size(); ++s) {
+        advance(s, m_now);
+        m_s[s].tst = 0;
+        m_s[s].counter = 0;
     }
+    m_uniformRadius += m_config.growthRate * m_now;
+    for (auto& a : m_radius) a += m_config.growthRate * m_now;
     m_maxRadius0 += m_config.growthRate * m_now;
     m_now = 0;
-    std::fill(m_counter.begin(), m_counter.end(), 0u);
     std::fill(m_lastCollision.begin(), m_lastCollision.end(), -kNoEvent);
     m_stats = {};
     m_virial = 0;
     m_dissipated = 0;
     buildCells();
+    sortParticles(false);
     rescheduleAll();
 }
 
@@ -492,10 +602,10 @@ void Engine<D, Queue>::setCollisionRules(const Restitution& restitution, Real wa
 
 template <int D, class Queue>
 Real Engine<D, Queue>::kineticEnergy() const noexcept {
-    Real e = 0;
+    Real e = 0;  // summed in the caller's particle order (independent of the internal slots)
     for (std::uint32_t i = 0; i < size(); ++i) {
         const V v = velocityNow(i);
-        e += 0.5 * m_mass[i] * dot(v, v);
+        e += 0.5 * mass(i) * dot(v, v);
     }
     return e;
 }
@@ -503,9 +613,11 @@ Real Engine<D, Queue>::kineticEnergy() const noexcept {
 template <int D, class Queue>
 Real Engine<D, Queue>::rotationalEnergy() const noexcept {
     Real e = 0;
-    for (std::uint32_t i = 0; i < m_omega.size(); ++i) {
+    if (m_omega.empty()) return e;
+    for (std::uint32_t i = 0; i < size(); ++i) {
         const Real a = radius(i);
-        e += 0.5 * m_config.inertiaFactor * m_mass[i] * a * a * dot(m_omega[i], m_omega[i]);
+        const Vec3& w = m_omega[m_slot[i]];
+        e += 0.5 * m_config.inertiaFactor * mass(i) * a * a * dot(w, w);
     }
     return e;
 }
@@ -516,7 +628,7 @@ Real Engine<D, Queue>::potentialEnergy() const noexcept {
     Real e = 0;
     for (std::uint32_t i = 0; i < size(); ++i) {
         const V x = positionNow(i);
-        for (int d = 0; d < D; ++d) e -= m_mass[i] * m_config.gravity[d] * x[d];
+        for (int d = 0; d < D; ++d) e -= mass(i) * m_config.gravity[d] * x[d];
     }
     return e;
 }
@@ -524,16 +636,16 @@ Real Engine<D, Queue>::potentialEnergy() const noexcept {
 template <int D, class Queue>
 typename Engine<D, Queue>::V Engine<D, Queue>::momentum() const noexcept {
     V p;
-    for (std::uint32_t i = 0; i < size(); ++i) p = p + velocityNow(i) * m_mass[i];
+    for (std::uint32_t i = 0; i < size(); ++i) p = p + velocityNow(i) * mass(i);
     return p;
 }
 
 template <int D, class Queue>
 std::size_t Engine<D, Queue>::memoryBytes() const noexcept {
-    return m_s.capacity() * sizeof(State) + m_mass.capacity() * sizeof(Real) + m_omega.capacity() * sizeof(Vec3) +
-           m_counter.capacity() * 4 + m_lastCollision.capacity() * sizeof(Real) +
-           (m_cell.capacity() + m_next.capacity() + m_prev.capacity() + m_head.capacity()) * 4 +
-           m_event.capacity() * sizeof(Event) + m_queue.memoryBytes();
+    return m_s.capacity() * sizeof(State) + m_event.capacity() * sizeof(Event) +
+           m_cellOf.capacity() * sizeof(CellCoords) + (m_id.capacity() + m_slot.capacity() + m_head.capacity()) * 4 +
+           (m_radius.capacity() + m_mass.capacity() + m_lastCollision.capacity()) * sizeof(Real) +
+           m_omega.capacity() * sizeof(Vec3) + m_queue.memoryBytes();
 }
 
 template <int D, class Queue>
@@ -544,25 +656,27 @@ void Engine<D, Queue>::saveState(std::ostream& os) const {
     writePod(os, m_virial);
     writePod(os, m_dissipated);
     writePod(os, m_maxRadius0);
+    writePod(os, m_uniformRadius);
+    writePod(os, m_nextSort);
     writePod(os, m_config.restitution);
     writePod(os, m_config.wallRestitution);
     writePod(os, m_config.tc);
     writeVector(os, m_s);
+    writeVector(os, m_event);
+    writeVector(os, m_cellOf);
+    writeVector(os, m_id);
+    writeVector(os, m_radius);
     writeVector(os, m_mass);
     writeVector(os, m_omega);
-    writeVector(os, m_counter);
     writeVector(os, m_lastCollision);
-    writeVector(os, m_cell);
-    writeVector(os, m_next);
-    writeVector(os, m_prev);
     writeVector(os, m_head);
-    writeVector(os, m_event);
     writePod(os, m_cells);
+    writePod(os, m_stride);
     writePod(os, m_cellEdge);
     writePod(os, m_invCellEdge);
     writePod(os, m_regridTime);
     std::vector<Real> times(size());
-    for (std::uint32_t i = 0; i < size(); ++i) times[i] = m_queue.time(i);
+    for (std::uint32_t s = 0; s < size(); ++s) times[s] = m_queue.time(s);
     writeVector(os, times);
 }
 
@@ -575,30 +689,37 @@ void Engine<D, Queue>::loadState(std::istream& is) {
     m_virial = readPod<Real>(is);
     m_dissipated = readPod<Real>(is);
     m_maxRadius0 = readPod<Real>(is);
+    m_uniformRadius = readPod<Real>(is);
+    m_nextSort = readPod<std::uint64_t>(is);
     m_config.restitution = readPod<Restitution>(is);
     m_config.wallRestitution = readPod<Real>(is);
     m_config.tc = readPod<Real>(is);
     const auto n = size();
     readVector(is, m_s);
+    readVector(is, m_event);
+    readVector(is, m_cellOf);
+    readVector(is, m_id);
+    readVector(is, m_radius);
     readVector(is, m_mass);
     readVector(is, m_omega);
-    readVector(is, m_counter);
     readVector(is, m_lastCollision);
-    readVector(is, m_cell);
-    readVector(is, m_next);
-    readVector(is, m_prev);
     readVector(is, m_head);
-    readVector(is, m_event);
     m_cells = readPod<std::array<int, 3>>(is);
+    m_stride = readPod<std::array<std::uint32_t, 3>>(is);
     m_cellEdge = readPod<std::array<Real, 3>>(is);
     m_invCellEdge = readPod<std::array<Real, 3>>(is);
     m_regridTime = readPod<Real>(is);
     std::vector<Real> times;
     readVector(is, times);
-    if (m_s.size() != n || times.size() != n || m_event.size() != n)
+    if (m_s.size() != n || times.size() != n || m_event.size() != n || m_id.size() != n || m_cellOf.size() != n)
         throw std::runtime_error("checkpoint holds another number of particles");
+    m_slot.resize(n);
+    for (std::uint32_t s = 0; s < n; ++s) {
+        if (m_id[s] >= n) throw std::runtime_error("checkpoint corrupt (particle id)");
+        m_slot[m_id[s]] = s;
+    }
     m_queue.reset(n);
-    for (std::uint32_t i = 0; i < n; ++i) m_queue.set(i, times[i]);
+    for (std::uint32_t s = 0; s < n; ++s) m_queue.set(s, times[s]);
 }
 
 template class Engine<2, AddressableHeap>;

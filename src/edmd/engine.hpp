@@ -77,11 +77,11 @@ public:
     V positionNow(std::uint32_t i) const noexcept;
     V velocityNow(std::uint32_t i) const noexcept;
     /// Angular velocity [rad/s] (zero unless rough; 2D: the z component in [2]).
-    Vec3 omega(std::uint32_t i) const noexcept { return m_omega.empty() ? Vec3{} : m_omega[i]; }
-    Real radius(std::uint32_t i) const noexcept { return m_s[i].radius + m_config.growthRate * m_now; }
-    Real mass(std::uint32_t i) const noexcept { return m_mass[i]; }
+    Vec3 omega(std::uint32_t i) const noexcept { return m_omega.empty() ? Vec3{} : m_omega[m_slot[i]]; }
+    Real radius(std::uint32_t i) const noexcept { return radiusSlot(m_slot[i]); }
+    Real mass(std::uint32_t i) const noexcept { return massSlot(m_slot[i]); }
     /// Collisions particle i has suffered (particles and walls) since the last restartClock().
-    std::uint64_t collisions(std::uint32_t i) const noexcept { return m_counter[i]; }
+    std::uint64_t collisions(std::uint32_t i) const noexcept { return m_s[m_slot[i]].counter; }
     /// Kinetic energy [J] (translational), rotational energy [J], potential energy in gravity [J]
     /// (zero at the origin), momentum [kg m/s], all at the current time.
     Real kineticEnergy() const noexcept;
@@ -96,7 +96,8 @@ public:
     Real dissipatedEnergy() const noexcept { return m_dissipated; }
     /// Minimum-image separation vector r_i - r_j at the current time.
     V separation(std::uint32_t i, std::uint32_t j) const noexcept;
-    /// Bytes held by the engine (particle state, cells, events, queue).
+    /// Bytes held by the engine (particle state, cells, events, queue); per particle about 64 +
+    /// 8 (event) + 2 D (cell) + 8 (id map) + the queue + 4 C/N (cell heads) for spheres.
     std::size_t memoryBytes() const noexcept;
 
     /// Complete state in a binary stream; loadState restores it so that the run continues bit
@@ -105,50 +106,75 @@ public:
     void loadState(std::istream& is);
 
 private:
-    enum class Kind : std::uint8_t { None, Collision, Cell, Wall };
+    // ---- events (spec 2.2 "Event", 8 bytes): the partner field encodes the kind.
+    static constexpr std::uint32_t kNone = 0xFFFFFFFFu;       ///< no event (t = +inf) / end of a cell list
+    static constexpr std::uint32_t kCellBase = 0xFFFFFFF0u;   ///< + face: cell crossing, face = 2 axis + (1 if upward)
+    static constexpr std::uint32_t kWallBase = 0xFFFFFFE0u;   ///< + face: plane wall at that face of the box
+    static constexpr std::uint32_t kMaxParticles = kWallBase; ///< slots below this are particles
     struct Event {
-        std::uint32_t partner = 0;         ///< particle; for cells and walls 2 * axis + (1 if upward)
-        std::uint32_t partnerCounter = 0;  ///< partner's collision counter when scheduled
-        Kind kind = Kind::None;
+        std::uint32_t partner = kNone;     ///< particle slot, kCellBase + face, kWallBase + face or kNone
+        std::uint32_t partnerCounter = 0;  ///< partner's collision counter when scheduled (collisions only)
     };
+    /// What the event computation reads of every neighbour, one cache line for spheres (random
+    /// access per neighbour dominates the cost; spec 2.2's ParticleState). Indexed by slot:
+    /// particles are kept in cell order (re-sorted every kSortEvery N events) so that the
+    /// particles of neighbouring cells lie close in memory; m_id/m_slot map slots and the
+    /// caller's particle indices.
+    struct alignas(D == 3 ? 64 : 16) State {
+        V x;                        ///< [m] position at t_st
+        V v;                        ///< [m/s] velocity at t_st
+        Real tst = 0;               ///< [s] time of the last update
+        std::uint32_t next = kNone; ///< next slot in the same cell (singly linked, ascending after a sort)
+        std::uint32_t counter = 0;  ///< collision counter (wrap-around is harmless: only equality is tested)
+    };
+    using CellCoords = std::array<std::uint16_t, D>;  ///< integer cell coordinates per axis
+    static constexpr int kMaxCellsPerAxis = 65535;
+    /// Events between two spatial sorts, in units of N (a sort costs about as much as N events).
+    static constexpr std::uint64_t kSortEvery = 16;
 
     std::uint64_t run(Real tEnd, std::uint64_t collisionLimit);
-    void advance(std::uint32_t i, Real t) noexcept;
-    void schedule(std::uint32_t i) noexcept;
-    template <bool Gravity, bool Growing>
-    void scheduleImpl(std::uint32_t i) noexcept;
-    void collide(std::uint32_t i, std::uint32_t j, Real t) noexcept;
-    void collideWall(std::uint32_t i, std::uint32_t wall, Real t) noexcept;
-    void crossCell(std::uint32_t i, std::uint32_t face) noexcept;
-    bool elasticByTc(std::uint32_t i, std::uint32_t j, Real t) const noexcept;
+    void advance(std::uint32_t s, Real t) noexcept;
+    void schedule(std::uint32_t s) noexcept;
+    template <bool Gravity, bool Growing, bool Uniform>
+    void scheduleImpl(std::uint32_t s) noexcept;
+    void collide(std::uint32_t s, std::uint32_t j, Real t) noexcept;
+    void collideWall(std::uint32_t s, std::uint32_t wall, Real t) noexcept;
+    void crossCell(std::uint32_t s, std::uint32_t face) noexcept;
+    bool elasticByTc(std::uint32_t s, std::uint32_t j, Real t) const noexcept;
+    /// Cell geometry from the current largest radius (spec 2.4) and every particle's cell from
+    /// its position at t_st.
     void buildCells();
+    /// Counting sort of the slots by cell index; relinks the cell lists, remaps events and the
+    /// id map; rebuilds the queue if `requeue`. Physically a no-op (only slots change).
+    void sortParticles(bool requeue);
     void regrid();
-    std::uint32_t cellIndex(const int c[D]) const noexcept;
-    void cellCoords(std::uint32_t i, int c[D]) const noexcept;
-    void insertIntoCell(std::uint32_t i, std::uint32_t cell) noexcept;
-    void removeFromCell(std::uint32_t i) noexcept;
+    std::uint32_t cellIndex(const CellCoords& c) const noexcept;
+    void linkCell(std::uint32_t s) noexcept;
+    void unlinkCell(std::uint32_t s) noexcept;
     V minimumImage(V d) const noexcept;
     void rescheduleAll() noexcept;
-
-    /// What the event computation reads of every neighbour, in one cache line for spheres
-    /// (random access per neighbour dominates the cost; spec 2.2's ParticleState).
-    struct alignas(16) State {
-        V x;            ///< [m] position at t_st
-        V v;            ///< [m/s] velocity at t_st
-        Real tst = 0;   ///< [s] time of the last update
-        Real radius = 0;  ///< [m] radius at time 0 (growing spheres: a(t) = radius + u_a t)
-    };
+    Real radiusSlot(std::uint32_t s) const noexcept {
+        return (m_radius.empty() ? m_uniformRadius : m_radius[s]) + m_config.growthRate * m_now;
+    }
+    Real massSlot(std::uint32_t s) const noexcept { return m_mass.empty() ? m_uniformMass : m_mass[s]; }
+    V positionSlot(std::uint32_t s) const noexcept;
+    V velocitySlot(std::uint32_t s) const noexcept;
 
     EngineConfig m_config;
     std::vector<State> m_s;
-    std::vector<Real> m_mass;
-    std::vector<Vec3> m_omega;          ///< [rad/s] rough spheres only
-    std::vector<std::uint32_t> m_counter;  ///< collision counters (wrap-around is harmless: only equality is tested)
-    std::vector<Real> m_lastCollision;  ///< [s] time of each particle's last collision (TC model only)
-    std::vector<std::uint32_t> m_cell, m_next, m_prev, m_head;
     std::vector<Event> m_event;
-    Queue m_queue;
+    std::vector<CellCoords> m_cellOf;      ///< cell of each slot
+    std::vector<std::uint32_t> m_id;       ///< caller's particle index of each slot
+    std::vector<std::uint32_t> m_slot;     ///< slot of each particle index
+    std::vector<Real> m_radius;            ///< [m] radius at time 0 per slot; empty if all equal (m_uniformRadius)
+    std::vector<Real> m_mass;              ///< [kg] per slot; empty if all equal (m_uniformMass)
+    Real m_uniformRadius = 0, m_uniformMass = 1;
+    std::vector<Vec3> m_omega;             ///< [rad/s] per slot, rough spheres only
+    std::vector<Real> m_lastCollision;     ///< [s] per slot: time of the last collision (TC model only)
+    std::vector<std::uint32_t> m_head;     ///< first slot of each cell
+    Queue m_queue;                         ///< keyed by slot
     std::array<int, 3> m_cells{1, 1, 1};     ///< cells per axis
+    std::array<std::uint32_t, 3> m_stride{1, 1, 1};  ///< cell index stride per axis
     std::array<Real, 3> m_cellEdge{1, 1, 1}; ///< [m]
     std::array<Real, 3> m_invCellEdge{1, 1, 1};
     Real m_regridTime = kNoEvent;  ///< [s] growing spheres outgrow the cells at this time
@@ -157,6 +183,7 @@ private:
     Real m_now = 0;
     Real m_virial = 0;
     Real m_dissipated = 0;
+    std::uint64_t m_nextSort = 0;  ///< value of m_stats.events at which the next spatial sort happens
     EngineStats m_stats;
 };
 
