@@ -20,6 +20,22 @@
 namespace granulab::edmd {
 
 namespace {
+// Checkpoint I/O of vectors with any allocator (core/binary_io's take the default one).
+template <class T, class A>
+void writeVector(std::ostream& os, const std::vector<T, A>& v) {
+    writePod<std::uint64_t>(os, v.size());
+    os.write(reinterpret_cast<const char*>(v.data()), static_cast<std::streamsize>(v.size() * sizeof(T)));
+}
+
+template <class T, class A>
+void readVector(std::istream& is, std::vector<T, A>& v) {
+    const auto n = readPod<std::uint64_t>(is);
+    if (n > (std::uint64_t{1} << 40)) throw std::runtime_error("checkpoint corrupt (vector size)");
+    v.resize(n);
+    is.read(reinterpret_cast<char*>(v.data()), static_cast<std::streamsize>(n * sizeof(T)));
+    if (!is) throw std::runtime_error("checkpoint truncated");
+}
+
 Vec3 lift(const VecD<2>& a) noexcept { return {{a[0], a[1], 0}}; }
 Vec3 lift(const VecD<3>& a) noexcept { return a; }
 template <int D>
@@ -37,7 +53,7 @@ Engine<D, Queue>::Engine(EngineConfig config, std::vector<V> x, std::vector<V> v
     const auto n = static_cast<std::uint32_t>(x.size());
     if (v.size() != n || radius.size() != n || mass.size() != n)
         throw std::invalid_argument("edmd::Engine: position, velocity, radius and mass counts differ");
-    if (x.size() >= kMaxParticles) throw std::invalid_argument("edmd::Engine: too many particles");
+    if (x.size() >= 0x80000000u) throw std::invalid_argument("edmd::Engine: too many particles");
     for (int d = 0; d < D; ++d)
         if (!(m_config.box[d] > 0)) throw std::invalid_argument("edmd::Engine: box edges must be positive");
     if (m_config.growthRate != 0)

@@ -161,17 +161,17 @@ private:
     V velocitySlot(std::uint32_t s) const noexcept;
 
     EngineConfig m_config;
-    std::vector<State> m_s;
-    std::vector<Event> m_event;
-    std::vector<CellCoords> m_cellOf;      ///< cell of each slot
-    std::vector<std::uint32_t> m_id;       ///< caller's particle index of each slot
-    std::vector<std::uint32_t> m_slot;     ///< slot of each particle index
+    BigVector<State> m_s;
+    BigVector<Event> m_event;
+    BigVector<CellCoords> m_cellOf;      ///< cell of each slot
+    BigVector<std::uint32_t> m_id;       ///< caller's particle index of each slot
+    BigVector<std::uint32_t> m_slot;     ///< slot of each particle index
     std::vector<Real> m_radius;            ///< [m] radius at time 0 per slot; empty if all equal (m_uniformRadius)
     std::vector<Real> m_mass;              ///< [kg] per slot; empty if all equal (m_uniformMass)
     Real m_uniformRadius = 0, m_uniformMass = 1;
     std::vector<Vec3> m_omega;             ///< [rad/s] per slot, rough spheres only
     std::vector<Real> m_lastCollision;     ///< [s] per slot: time of the last collision (TC model only)
-    std::vector<std::uint32_t> m_head;     ///< first slot of each cell
+    BigVector<std::uint32_t> m_head;     ///< first slot of each cell
     Queue m_queue;                         ///< keyed by slot
     std::array<int, 3> m_cells{1, 1, 1};     ///< cells per axis
     std::array<std::uint32_t, 3> m_stride{1, 1, 1};  ///< cell index stride per axis

@@ -75,26 +75,24 @@ std::uint32_t CalendarQueue::binOf(Real t) const noexcept {
 }
 
 void CalendarQueue::link(std::uint32_t i, std::uint32_t bin) noexcept {
-    m_bin[i] = bin;
-    m_prev[i] = kNone;
+    m_prev[i] = kHeadOf | bin;  // the head of a list keeps its bin in the back link
     m_next[i] = m_head[bin];
     if (m_head[bin] != kNone) m_prev[m_head[bin]] = i;
     m_head[bin] = i;
 }
 
 void CalendarQueue::unlink(std::uint32_t i) noexcept {
-    const std::uint32_t b = m_bin[i];
-    if (m_prev[i] != kNone) m_next[m_prev[i]] = m_next[i];
-    else m_head[b] = m_next[i];
-    if (m_next[i] != kNone) m_prev[m_next[i]] = m_prev[i];
+    const std::uint32_t prev = m_prev[i];
+    if (prev & kHeadOf) m_head[prev & ~kHeadOf] = m_next[i];
+    else m_next[prev] = m_next[i];
+    if (m_next[i] != kNone) m_prev[m_next[i]] = prev;  // a new head inherits the bin tag
 }
 
 void CalendarQueue::reset(std::uint32_t n) {
     m_time.assign(n, kNever);
     m_next.assign(n, kNone);
     m_prev.assign(n, kNone);
-    m_bin.assign(n, 0);
-    m_bins = std::max<std::uint32_t>(n, 1);
+    m_bins = std::clamp<std::uint32_t>(n, 1, kHeadOf - 1);  // bin numbers must fit beside the tag
     m_head.assign(m_bins + 1, kNone);
     m_current = 0;
     m_start = 0;
@@ -164,6 +162,7 @@ void CalendarQueue::settle() noexcept {
         if (earlier(m_time[i], i, m_time[best], best)) best = i;
     }
     m_top = best;
+    m_topBin = bin;
     constexpr std::uint32_t kLongBin = 64;
     if (scanned > kLongBin && bin < m_bins && m_setsSinceRebuild > m_bins) {
         rebuildAll();  // re-tune the width from all pending times, then find the top again
@@ -177,7 +176,7 @@ void CalendarQueue::set(std::uint32_t i, Real t) noexcept {
     m_time[i] = t;
     link(i, binOf(t));
     // The earliest event changes only if i was it or i now beats it.
-    if (i == m_top || earlier(t, i, m_time[m_top], m_top) || m_bin[m_top] != m_current) settle();
+    if (i == m_top || earlier(t, i, m_time[m_top], m_top) || m_topBin != m_current) settle();
 }
 
 }  // namespace granulab::edmd

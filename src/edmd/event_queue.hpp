@@ -16,13 +16,47 @@
 //    current bin grows long (more than 64 events) everything is re-binned, at most once per B
 //    updates, so the cost stays O(1) amortised.
 #pragma once
+#include <sys/mman.h>
+
 #include <cstdint>
+#include <cstdlib>
 #include <limits>
+#include <new>
 #include <vector>
 
 #include "core/types.hpp"
 
 namespace granulab::edmd {
+
+/// Allocator of the per-particle arrays: blocks of 2 MiB and more are 2 MiB aligned and marked
+/// for transparent huge pages (madvise), because every event reads a few random lines of
+/// arrays of up to gigabytes and 4 KiB pages would add a page walk (TLB miss) to most of them.
+/// Contents and results do not depend on it.
+template <class T>
+struct BigArrayAllocator {
+    using value_type = T;
+    static constexpr std::size_t kHuge = std::size_t{1} << 21;
+    BigArrayAllocator() noexcept = default;
+    template <class U>
+    BigArrayAllocator(const BigArrayAllocator<U>&) noexcept {}
+    T* allocate(std::size_t n) {
+        const std::size_t bytes = n * sizeof(T);
+        if (bytes < kHuge) return static_cast<T*>(::operator new(bytes, std::align_val_t(alignof(T))));
+        const std::size_t rounded = (bytes + kHuge - 1) / kHuge * kHuge;
+        void* p = std::aligned_alloc(kHuge, rounded);
+        if (!p) throw std::bad_alloc();
+        madvise(p, rounded, MADV_HUGEPAGE);  // a hint; failure only costs speed
+        return static_cast<T*>(p);
+    }
+    void deallocate(T* p, std::size_t n) noexcept {
+        if (n * sizeof(T) < kHuge) ::operator delete(p, std::align_val_t(alignof(T)));
+        else std::free(p);
+    }
+    template <class U>
+    bool operator==(const BigArrayAllocator<U>&) const noexcept { return true; }
+};
+template <class T>
+using BigVector = std::vector<T, BigArrayAllocator<T>>;
 
 /// An event time t [s] of particle i; (t, i) order.
 inline bool earlier(Real ta, std::uint32_t a, Real tb, std::uint32_t b) noexcept {
@@ -50,9 +84,9 @@ private:
         m_heap[slot] = particle;
         m_pos[particle] = slot;
     }
-    std::vector<Real> m_time;           ///< [s] event time per particle
-    std::vector<std::uint32_t> m_heap;  ///< particles in heap order
-    std::vector<std::uint32_t> m_pos;   ///< heap slot of each particle
+    BigVector<Real> m_time;           ///< [s] event time per particle
+    BigVector<std::uint32_t> m_heap;  ///< particles in heap order
+    BigVector<std::uint32_t> m_pos;   ///< heap slot of each particle
 };
 
 class TournamentTree {
@@ -67,10 +101,11 @@ public:
 
 private:
     std::uint32_t m_n = 0, m_leaves = 1;  ///< particles; leaves (power of two >= n)
-    std::vector<Real> m_time;             ///< [s] per particle, padded leaves at +infinity
-    std::vector<std::uint32_t> m_node;    ///< 1-based tree: node k holds the winner of 2k, 2k+1
+    BigVector<Real> m_time;             ///< [s] per particle, padded leaves at +infinity
+    BigVector<std::uint32_t> m_node;    ///< 1-based tree: node k holds the winner of 2k, 2k+1
 };
 
+/// Particle indices must be below 2^31 (the top bit of a back link tags a list head).
 class CalendarQueue {
 public:
     void reset(std::uint32_t n);
@@ -81,12 +116,12 @@ public:
     std::uint32_t size() const noexcept { return static_cast<std::uint32_t>(m_time.size()); }
     std::uint64_t rebuilds() const noexcept { return m_rebuilds; }
     std::size_t memoryBytes() const noexcept {
-        return m_time.capacity() * sizeof(Real) + (m_next.capacity() + m_prev.capacity() + m_bin.capacity() +
-                                                   m_head.capacity()) * 4;
+        return m_time.capacity() * sizeof(Real) + (m_next.capacity() + m_prev.capacity() + m_head.capacity()) * 4;
     }
 
 private:
     static constexpr std::uint32_t kNone = 0xFFFFFFFFu;
+    static constexpr std::uint32_t kHeadOf = 0x80000000u;  ///< back link of a list head: kHeadOf | bin
     std::uint32_t binOf(Real t) const noexcept;
     void link(std::uint32_t i, std::uint32_t bin) noexcept;
     void unlink(std::uint32_t i) noexcept;
@@ -98,10 +133,11 @@ private:
     /// bin has grown long (the first window was made from too few or unrepresentative times).
     void rebuildAll() noexcept;
 
-    std::vector<Real> m_time;          ///< [s] per particle
-    std::vector<std::uint32_t> m_next, m_prev, m_bin;  ///< list links and bin of each particle
-    std::vector<std::uint32_t> m_head; ///< first particle of each bin; [B] is the overflow list
+    BigVector<Real> m_time;          ///< [s] per particle
+    BigVector<std::uint32_t> m_next, m_prev;  ///< list links of each particle (prev of a head: kHeadOf | bin)
+    BigVector<std::uint32_t> m_head; ///< first particle of each bin; [B] is the overflow list
     std::uint32_t m_bins = 1, m_current = 0, m_top = 0;
+    std::uint32_t m_topBin = 0;        ///< bin in which settle() found m_top
     Real m_start = 0;                  ///< [s] start of bin 0
     Real m_width = 1;                  ///< [s] bin width
     Real m_invWidth = 1;
