@@ -76,9 +76,8 @@ Engine<D, Queue>::Engine(EngineConfig config, std::vector<V> x, std::vector<V> v
     if (m_config.rough()) m_omega.assign(n, Vec3{});
     if (m_config.tc > 0) m_lastCollision.assign(n, -kNoEvent);
     m_event.assign(n, Event{});
-    m_id.resize(n);
     m_slot.resize(n);
-    for (std::uint32_t i = 0; i < n; ++i) m_id[i] = m_slot[i] = i;
+    for (std::uint32_t i = 0; i < n; ++i) m_slot[i] = i;
     buildCells();
     sortParticles(false);
     rescheduleAll();
@@ -165,7 +164,6 @@ void Engine<D, Queue>::sortParticles(bool requeue) {
             std::swap(m_s[s], m_s[d]);
             std::swap(m_event[s], m_event[d]);
             std::swap(m_cellOf[s], m_cellOf[d]);
-            std::swap(m_id[s], m_id[d]);
             if (!m_radius.empty()) std::swap(m_radius[s], m_radius[d]);
             if (!m_mass.empty()) std::swap(m_mass[s], m_mass[d]);
             if (!m_omega.empty()) std::swap(m_omega[s], m_omega[d]);
@@ -659,7 +657,7 @@ typename Engine<D, Queue>::V Engine<D, Queue>::momentum() const noexcept {
 template <int D, class Queue>
 std::size_t Engine<D, Queue>::memoryBytes() const noexcept {
     return m_s.capacity() * sizeof(State) + m_event.capacity() * sizeof(Event) +
-           m_cellOf.capacity() * sizeof(CellCoords) + (m_id.capacity() + m_slot.capacity() + m_head.capacity()) * 4 +
+           m_cellOf.capacity() * sizeof(CellCoords) + (m_slot.capacity() + m_head.capacity()) * 4 +
            (m_radius.capacity() + m_mass.capacity() + m_lastCollision.capacity()) * sizeof(Real) +
            m_omega.capacity() * sizeof(Vec3) + m_queue.memoryBytes();
 }
@@ -680,7 +678,9 @@ void Engine<D, Queue>::saveState(std::ostream& os) const {
     writeVector(os, m_s);
     writeVector(os, m_event);
     writeVector(os, m_cellOf);
-    writeVector(os, m_id);
+    std::vector<std::uint32_t> id(size());  // caller's particle index of each slot (same format as before)
+    for (std::uint32_t i = 0; i < size(); ++i) id[m_slot[i]] = i;
+    writeVector(os, id);
     writeVector(os, m_radius);
     writeVector(os, m_mass);
     writeVector(os, m_omega);
@@ -714,7 +714,8 @@ void Engine<D, Queue>::loadState(std::istream& is) {
     readVector(is, m_s);
     readVector(is, m_event);
     readVector(is, m_cellOf);
-    readVector(is, m_id);
+    std::vector<std::uint32_t> id;
+    readVector(is, id);
     readVector(is, m_radius);
     readVector(is, m_mass);
     readVector(is, m_omega);
@@ -727,12 +728,12 @@ void Engine<D, Queue>::loadState(std::istream& is) {
     m_regridTime = readPod<Real>(is);
     std::vector<Real> times;
     readVector(is, times);
-    if (m_s.size() != n || times.size() != n || m_event.size() != n || m_id.size() != n || m_cellOf.size() != n)
+    if (m_s.size() != n || times.size() != n || m_event.size() != n || id.size() != n || m_cellOf.size() != n)
         throw std::runtime_error("checkpoint holds another number of particles");
-    m_slot.resize(n);
+    m_slot.assign(n, kNone);
     for (std::uint32_t s = 0; s < n; ++s) {
-        if (m_id[s] >= n) throw std::runtime_error("checkpoint corrupt (particle id)");
-        m_slot[m_id[s]] = s;
+        if (id[s] >= n || m_slot[id[s]] != kNone) throw std::runtime_error("checkpoint corrupt (particle id)");
+        m_slot[id[s]] = s;
     }
     m_queue.reset(n);
     for (std::uint32_t s = 0; s < n; ++s) m_queue.set(s, times[s]);

@@ -97,7 +97,7 @@ public:
     /// Minimum-image separation vector r_i - r_j at the current time.
     V separation(std::uint32_t i, std::uint32_t j) const noexcept;
     /// Bytes held by the engine (particle state, cells, events, queue); per particle about 64 +
-    /// 8 (event) + 2 D (cell) + 8 (id map) + the queue + 4 C/N (cell heads) for spheres.
+    /// 8 (event) + 2 D (cell) + 4 (id map) + the queue + 4 C/N (cell heads) for spheres.
     std::size_t memoryBytes() const noexcept;
 
     /// Complete state in a binary stream; loadState restores it so that the run continues bit
@@ -164,8 +164,7 @@ private:
     BigVector<State> m_s;
     BigVector<Event> m_event;
     BigVector<CellCoords> m_cellOf;      ///< cell of each slot
-    BigVector<std::uint32_t> m_id;       ///< caller's particle index of each slot
-    BigVector<std::uint32_t> m_slot;     ///< slot of each particle index
+    BigVector<std::uint32_t> m_slot;     ///< slot of each particle index (the inverse is made only for checkpoints)
     std::vector<Real> m_radius;            ///< [m] radius at time 0 per slot; empty if all equal (m_uniformRadius)
     std::vector<Real> m_mass;              ///< [kg] per slot; empty if all equal (m_uniformMass)
     Real m_uniformRadius = 0, m_uniformMass = 1;

@@ -75,23 +75,21 @@ std::uint32_t CalendarQueue::binOf(Real t) const noexcept {
 }
 
 void CalendarQueue::link(std::uint32_t i, std::uint32_t bin) noexcept {
-    m_prev[i] = kHeadOf | bin;  // the head of a list keeps its bin in the back link
-    m_next[i] = m_head[bin];
-    if (m_head[bin] != kNone) m_prev[m_head[bin]] = i;
+    m_node[i].prev = kHeadOf | bin;  // the head of a list keeps its bin in the back link
+    m_node[i].next = m_head[bin];
+    if (m_head[bin] != kNone) m_node[m_head[bin]].prev = i;
     m_head[bin] = i;
 }
 
 void CalendarQueue::unlink(std::uint32_t i) noexcept {
-    const std::uint32_t prev = m_prev[i];
-    if (prev & kHeadOf) m_head[prev & ~kHeadOf] = m_next[i];
-    else m_next[prev] = m_next[i];
-    if (m_next[i] != kNone) m_prev[m_next[i]] = prev;  // a new head inherits the bin tag
+    const std::uint32_t prev = m_node[i].prev;
+    if (prev & kHeadOf) m_head[prev & ~kHeadOf] = m_node[i].next;
+    else m_node[prev].next = m_node[i].next;
+    if (m_node[i].next != kNone) m_node[m_node[i].next].prev = prev;  // a new head inherits the bin tag
 }
 
 void CalendarQueue::reset(std::uint32_t n) {
-    m_time.assign(n, kNever);
-    m_next.assign(n, kNone);
-    m_prev.assign(n, kNone);
+    m_node.assign(n, Node{kNever, kNone, kNone});
     m_bins = std::clamp<std::uint32_t>(n, 1, kHeadOf - 1);  // bin numbers must fit beside the tag
     m_head.assign(m_bins + 1, kNone);
     m_current = 0;
@@ -109,10 +107,10 @@ void CalendarQueue::rebuild() noexcept {
     // the window spans twice the mean distance of the events from the earliest one.
     Real tmin = kNever, sum = 0;
     std::uint32_t finite = 0;
-    for (std::uint32_t i = m_head[m_bins]; i != kNone; i = m_next[i])
-        if (m_time[i] < kNever) {
-            tmin = std::min(tmin, m_time[i]);
-            sum += m_time[i];
+    for (std::uint32_t i = m_head[m_bins]; i != kNone; i = m_node[i].next)
+        if (m_node[i].time < kNever) {
+            tmin = std::min(tmin, m_node[i].time);
+            sum += m_node[i].time;
             ++finite;
         }
     if (finite == 0) return;  // only +infinity pending: everything stays in the overflow
@@ -125,8 +123,8 @@ void CalendarQueue::rebuild() noexcept {
     std::uint32_t i = m_head[m_bins];
     m_head[m_bins] = kNone;
     while (i != kNone) {
-        const std::uint32_t next = m_next[i];
-        link(i, binOf(m_time[i]));
+        const std::uint32_t next = m_node[i].next;
+        link(i, binOf(m_node[i].time));
         i = next;
     }
 }
@@ -136,7 +134,7 @@ void CalendarQueue::rebuildAll() noexcept {
         std::uint32_t i = m_head[b];
         m_head[b] = kNone;
         while (i != kNone) {
-            const std::uint32_t next = m_next[i];
+            const std::uint32_t next = m_node[i].next;
             link(i, m_bins);
             i = next;
         }
@@ -157,9 +155,9 @@ void CalendarQueue::settle() noexcept {
     const std::uint32_t bin = m_current < m_bins ? m_current : m_bins;
     std::uint32_t best = m_head[bin];
     std::uint32_t scanned = 0;
-    for (std::uint32_t i = m_next[best]; i != kNone; i = m_next[i]) {
+    for (std::uint32_t i = m_node[best].next; i != kNone; i = m_node[i].next) {
         ++scanned;
-        if (earlier(m_time[i], i, m_time[best], best)) best = i;
+        if (earlier(m_node[i].time, i, m_node[best].time, best)) best = i;
     }
     m_top = best;
     m_topBin = bin;
@@ -173,10 +171,10 @@ void CalendarQueue::settle() noexcept {
 void CalendarQueue::set(std::uint32_t i, Real t) noexcept {
     ++m_setsSinceRebuild;
     unlink(i);
-    m_time[i] = t;
+    m_node[i].time = t;
     link(i, binOf(t));
     // The earliest event changes only if i was it or i now beats it.
-    if (i == m_top || earlier(t, i, m_time[m_top], m_top) || m_topBin != m_current) settle();
+    if (i == m_top || earlier(t, i, m_node[m_top].time, m_top) || m_topBin != m_current) settle();
 }
 
 }  // namespace granulab::edmd
