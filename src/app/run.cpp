@@ -27,18 +27,18 @@ std::string defaultOutDir(const std::string& scenePath) {
     return (fs::path("out") / fs::path(scenePath).stem()).string();
 }
 
-namespace {
-
-std::int64_t stepsOf(double interval, double dt) {
-    return std::max<std::int64_t>(1, std::llround(interval / dt));
-}
-
 std::size_t peakRssBytes() {
     std::ifstream in("/proc/self/status");
     std::string line;
     while (std::getline(in, line))
         if (line.rfind("VmHWM:", 0) == 0) return static_cast<std::size_t>(std::stoull(line.substr(6))) * 1024;
     return 0;
+}
+
+namespace {
+
+std::int64_t stepsOf(double interval, double dt) {
+    return std::max<std::int64_t>(1, std::llround(interval / dt));
 }
 
 /// Observers of one run: series rows, VTK snapshots, checkpoints.

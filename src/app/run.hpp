@@ -2,6 +2,7 @@
 // `granulab run`: read + validate a scene, run the engine, write the outputs of the user
 // contract (DESIGN.md), checkpoint and resume.
 #pragma once
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -24,5 +25,8 @@ int runCommand(const RunOptions& options);
 
 /// Default output folder for a scene path: out/<stem>.
 std::string defaultOutDir(const std::string& scenePath);
+
+/// Peak resident memory of this process [bytes] (VmHWM of /proc/self/status; 0 if unknown).
+std::size_t peakRssBytes();
 
 }  // namespace granulab::app

@@ -47,14 +47,6 @@ struct Bookkeeping {
     Real equilibrationWall = 0;     ///< [s] wall time of the elastic pre-run
 };
 
-std::size_t peakRss() {
-    std::ifstream in("/proc/self/status");
-    std::string line;
-    while (std::getline(in, line))
-        if (line.rfind("VmHWM:", 0) == 0) return static_cast<std::size_t>(std::stoull(line.substr(6))) * 1024;
-    return 0;
-}
-
 template <int D, class Queue>
 class EdmdRun {
 public:
@@ -498,7 +490,7 @@ int EdmdRun<D, Queue>::run() {
     js["last_row"] = m_lastRow;
     js["memory_bytes"] = engine.memoryBytes();
     js["bytes_per_particle"] = static_cast<double>(engine.memoryBytes()) / n;
-    js["peak_rss_bytes"] = peakRss();
+    js["peak_rss_bytes"] = peakRssBytes();
     if (!theory.is_null()) js["theory"] = theory;
     js["warnings"] = m_setup.warnings;
     io::writeFileAtomically(m_dir + "/summary.json", js.dump(2) + "\n");

@@ -524,14 +524,19 @@ void readOutput(TableReader& r, model::OutputDef& o) {
     r.boolean("vtk", o.vtk);
 }
 
+/// A per-axis array of 2 or 3 numbers (2D or 3D; the dimension is checked in validation).
+void readAxisNumbers(TableReader& r, const std::string& key, std::vector<Real>& out, const std::string& what) {
+    const toml::node* n = r.node(key);
+    if (!n) return;
+    const auto* a = n->as_array();
+    const std::size_t count = a ? a->size() : 0;
+    if (count != 2 && count != 3) r.diags().error(locOf(*n, r.file()), r.keyPath(key), "expected an array of 2 or 3 " + what);
+    else r.numbers(key, out, count);
+}
+
 void readEdmd(TableReader& r, model::EdmdDef& e) {
     e.loc = r.loc();
-    if (const toml::node* n = r.node("box")) {
-        const auto* a = n->as_array();
-        const std::size_t count = a ? a->size() : 0;
-        if (count != 2 && count != 3) r.diags().error(locOf(*n, r.file()), r.keyPath("box"), "expected an array of 2 or 3 edge lengths [m]");
-        else r.numbers("box", e.box, count);
-    }
+    readAxisNumbers(r, "box", e.box, "edge lengths [m]");
     if (const toml::node* n = r.node("periodic")) {
         const auto* a = n->as_array();
         bool ok = a && (a->size() == 2 || a->size() == 3);
@@ -557,12 +562,7 @@ void readEdmd(TableReader& r, model::EdmdDef& e) {
     r.number("tangential_restitution", e.tangentialRestitution);
     r.number("inertia_factor", e.inertiaFactor);
     r.number("tc", e.tc);
-    if (const toml::node* n = r.node("gravity")) {
-        const auto* a = n->as_array();
-        const std::size_t count = a ? a->size() : 0;
-        if (count != 2 && count != 3) r.diags().error(locOf(*n, r.file()), r.keyPath("gravity"), "expected an array of 2 or 3 components [m/s^2]");
-        else r.numbers("gravity", e.gravity, count);
-    }
+    readAxisNumbers(r, "gravity", e.gravity, "components [m/s^2]");
     r.number("growth_rate", e.growthRate);
     r.number("cell_size", e.cellSize);
     r.choice("queue", e.queue, {"calendar", "heap", "tree"});

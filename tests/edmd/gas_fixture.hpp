@@ -2,7 +2,8 @@
 // Shared helpers of the EDMD physics validation tests (edmd spec 4.2-4.6, 5.2-5.3, 5.7): a
 // periodic gas of N equal disks/spheres (m = a = 1, T0 = 1) at volume fraction nu, equilibrated
 // as in spec 4.2 (lattice, Maxwell velocities, elastic pre-run, restartClock), block-averaged
-// measurement windows, and snapshots for the gas analyses.
+// measurement windows, snapshots for the gas analyses; and the small lattice gas and the
+// all-pairs overlap check that the engine unit tests share.
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -10,11 +11,52 @@
 #include <vector>
 
 #include "analysis/kinetic_theory.hpp"
+#include "core/rng.hpp"
 #include "analysis/point_set.hpp"
 #include "edmd/engine.hpp"
 #include "edmd/initial_state.hpp"
 
 namespace granulab::edmd::validation {
+
+/// Smallest centre distance over all pairs divided by the contact distance (O(N^2), minimum
+/// image); 1 - round-off when particles touch, below 1 if any pair overlaps.
+template <class E>
+Real minimumGapRatio(const E& e) {
+    Real worst = 1e300;
+    for (std::uint32_t i = 0; i < e.size(); ++i)
+        for (std::uint32_t j = i + 1; j < e.size(); ++j) {
+            const auto r = e.separation(i, j);
+            worst = std::min(worst, std::sqrt(dot(r, r)) / (e.radius(i) + e.radius(j)));
+        }
+    return worst;
+}
+
+/// n^D particles of radius a and unit mass on a cubic lattice in a box of edge L (sites centred
+/// in their cells), Gaussian velocities with zero total momentum (not rescaled).
+template <int D>
+GasState<D> latticeGas(int n, Real L, Real a, std::uint64_t seed) {
+    GasState<D> g;
+    CounterRng rng(seed, 0);
+    int count = 1;
+    for (int d = 0; d < D; ++d) count *= n;
+    VecD<D> mean;
+    for (int k = 0; k < count; ++k) {
+        VecD<D> p, u;
+        int rest = k;
+        for (int d = 0; d < D; ++d) {
+            p[d] = (rest % n + 0.5) * L / n;
+            rest /= n;
+            u[d] = rng.normal();
+        }
+        g.x.push_back(p);
+        g.v.push_back(u);
+        mean = mean + u;
+    }
+    for (auto& u : g.v) u = u - mean * (1.0 / count);
+    g.radius.assign(g.x.size(), a);
+    g.mass.assign(g.x.size(), 1.0);
+    return g;
+}
 
 /// A periodic gas of `count` particles of radius 1 and mass 1 at temperature 1 and volume fraction
 /// nu, started on the lattice (spec 4.2 steps 1-2). The engine starts elastic.

@@ -9,35 +9,13 @@
 
 #include "core/rng.hpp"
 #include "edmd/engine.hpp"
+#include "gas_fixture.hpp"
 
 using namespace granulab;
 using namespace granulab::edmd;
+using validation::minimumGapRatio;
 
 namespace {
-/// n^D particles of radius a on a cubic lattice filling the box, Gaussian velocities with zero
-/// total momentum.
-template <int D>
-void lattice(int n, Real box, Real a, std::vector<VecD<D>>& x, std::vector<VecD<D>>& v, std::uint64_t seed) {
-    CounterRng rng(seed, 0);
-    int count = 1;
-    for (int d = 0; d < D; ++d) count *= n;
-    VecD<D> mean;
-    for (int k = 0; k < count; ++k) {
-        VecD<D> p, u;
-        int rest = k;
-        for (int d = 0; d < D; ++d) {
-            p[d] = (rest % n + 0.5) * box / n;
-            rest /= n;
-            u[d] = rng.normal();
-        }
-        x.push_back(p);
-        v.push_back(u);
-        mean = mean + u;
-    }
-    for (auto& u : v) u = u - mean * (1.0 / count);
-    (void)a;
-}
-
 template <int D, class Queue>
 Engine<D, Queue> gas(int n, Real fraction, Real eps, std::uint64_t seed) {
     const Real box = 1.0;
@@ -46,24 +24,15 @@ Engine<D, Queue> gas(int n, Real fraction, Real eps, std::uint64_t seed) {
     // packing fraction = count * volume(a) / box^D
     const Real unitVolume = D == 2 ? kPi : 4.0 / 3.0 * kPi;
     const Real a = std::pow(fraction * std::pow(box, D) / (count * unitVolume), 1.0 / D);
-    std::vector<VecD<D>> x, v;
-    lattice<D>(n, box, a, x, v, seed);
+    auto g = validation::latticeGas<D>(n, box, a, seed);
+    auto& x = g.x;
+    auto& v = g.v;
     EngineConfig c;
     c.box = {box, box, box};
     c.restitution.eps = eps;
     return Engine<D, Queue>(c, x, v, std::vector<Real>(x.size(), a), std::vector<Real>(x.size(), 1.0));
 }
 
-template <class E>
-Real minimumGapRatio(const E& e) {
-    Real worst = 1e300;
-    for (std::uint32_t i = 0; i < e.size(); ++i)
-        for (std::uint32_t j = i + 1; j < e.size(); ++j) {
-            const auto r = e.separation(i, j);
-            worst = std::min(worst, std::sqrt(dot(r, r)) / (e.radius(i) + e.radius(j)));
-        }
-    return worst;
-}
 }  // namespace
 
 TEST(EdmdEngine, ElasticDisksConserveEnergyAndMomentumAndNeverOverlap) {

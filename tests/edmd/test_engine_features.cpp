@@ -12,57 +12,13 @@
 
 #include "core/rng.hpp"
 #include "edmd/engine.hpp"
+#include "gas_fixture.hpp"
 
 using namespace granulab;
 using namespace granulab::edmd;
 
-namespace {
-
-template <int D>
-struct Gas {
-    std::vector<VecD<D>> x, v;
-    std::vector<Real> radius, mass;
-};
-
-/// n^D particles on a cubic lattice in a box of edge L (cells centred), Gaussian velocities
-/// with zero total momentum, radius a, unit mass.
-template <int D>
-Gas<D> latticeGas(int n, Real L, Real a, std::uint64_t seed) {
-    Gas<D> g;
-    CounterRng rng(seed, 0);
-    int count = 1;
-    for (int d = 0; d < D; ++d) count *= n;
-    VecD<D> mean;
-    for (int k = 0; k < count; ++k) {
-        VecD<D> p, u;
-        int rest = k;
-        for (int d = 0; d < D; ++d) {
-            p[d] = (rest % n + 0.5) * L / n;
-            rest /= n;
-            u[d] = rng.normal();
-        }
-        g.x.push_back(p);
-        g.v.push_back(u);
-        mean = mean + u;
-    }
-    for (auto& u : g.v) u = u - mean * (1.0 / count);
-    g.radius.assign(g.x.size(), a);
-    g.mass.assign(g.x.size(), 1.0);
-    return g;
-}
-
-template <class E>
-Real minimumGapRatio(const E& e) {
-    Real worst = 1e300;
-    for (std::uint32_t i = 0; i < e.size(); ++i)
-        for (std::uint32_t j = i + 1; j < e.size(); ++j) {
-            const auto r = e.separation(i, j);
-            worst = std::min(worst, std::sqrt(dot(r, r)) / (e.radius(i) + e.radius(j)));
-        }
-    return worst;
-}
-
-}  // namespace
+using validation::latticeGas;
+using validation::minimumGapRatio;
 
 TEST(EdmdWalls, BallBouncesOnTheFloorWithExactImpactTimeAndApex) {
     // A disk of radius a dropped from rest at height h (centre) in a closed 2D box: it hits the

@@ -21,18 +21,6 @@ namespace kt = granulab::analysis;
 
 namespace {
 
-/// Smallest centre distance over all pairs divided by the contact distance (O(N^2), minimum image).
-template <int D>
-Real minimumGapRatio(const Engine<D>& e) {
-    Real worst = 1e300;
-    for (std::uint32_t i = 0; i < e.size(); ++i)
-        for (std::uint32_t j = i + 1; j < e.size(); ++j) {
-            const auto r = e.separation(i, j);
-            worst = std::min(worst, std::sqrt(dot(r, r)) / (e.radius(i) + e.radius(j)));
-        }
-    return worst;
-}
-
 /// Best available hard-disk EOS for the comparison beyond Henderson: the virial series with the
 /// exact coefficients B2..B10 (N. Clisby and B. M. McCoy, J. Stat. Phys. 122, 15 (2006), Table 1:
 /// B_k/B_2^(k-1) = 0.782004, 0.53223180, 0.33355604, 0.1988425, 0.1148728, 0.0649930, 0.0362193,
