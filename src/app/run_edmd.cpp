@@ -44,6 +44,7 @@ struct Bookkeeping {
     std::uint64_t lastCollisions = 0;
     Real lastVirial = 0;
     Real lastKinetic = 0;
+    Real lastVolumeFraction = -1;   ///< at the previous row (growing spheres), -1 before the first row
     Real equilibrationWall = 0;     ///< [s] wall time of the elastic pre-run
 };
 
@@ -95,7 +96,8 @@ template <int D, class Queue>
 std::vector<std::string> EdmdRun<D, Queue>::columns() const {
     std::vector<std::string> c = {"time", "tau", "events", "collisions", "collisions_per_particle", "wall_collisions",
                                   "kinetic_energy", "rotational_energy", "potential_energy", "total_energy",
-                                  "dissipated_energy", "energy_per_particle", "temperature", "temperature_haff",
+                                  "dissipated_energy", "volume_fraction", "energy_per_particle", "temperature",
+                                  "temperature_haff",
                                   "collision_frequency", "mean_free_path", "pressure", "reduced_pressure",
                                   "tc_elastic_fraction", "kurtosis"};
     for (int d = 0; d < D; ++d) c.push_back(std::string("kurtosis_") + "xyz"[d]);
@@ -153,6 +155,12 @@ void EdmdRun<D, Queue>::seriesRow(const Engine& e, io::SeriesWriter& series) {
     const Real tau = m_setup.lambda > 0 ? m_setup.lambda * t / (2 * D * m_setup.tE) : 0;
     const Real tHaff = m_setup.lambda > 0 ? m_scene.edmd.temperature / ((1 + tau) * (1 + tau)) : m_scene.edmd.temperature;
     const auto density = analysis::densityDistribution(points);
+    // Volume fraction with the current radii (growing spheres change it), averaged over the row
+    // interval like the pressure, so that an equation of state can be read off one row.
+    Real particleVolume = 0;
+    for (const Real r : points.radius) particleVolume += edmd::ballVolume(D, r);
+    const Real fractionNow = particleVolume / m_totalVolume;
+    const Real fraction = m_book.lastVolumeFraction >= 0 ? 0.5 * (fractionNow + m_book.lastVolumeFraction) : fractionNow;
     std::vector<double> row = {t,
                                tau,
                                static_cast<double>(st.events),
@@ -164,6 +172,7 @@ void EdmdRun<D, Queue>::seriesRow(const Engine& e, io::SeriesWriter& series) {
                                e.potentialEnergy(),
                                kinetic + e.rotationalEnergy() + e.potentialEnergy(),
                                e.dissipatedEnergy(),
+                               fraction,
                                vel.kineticEnergy,
                                vel.temperature,
                                tHaff,
@@ -191,6 +200,7 @@ void EdmdRun<D, Queue>::seriesRow(const Engine& e, io::SeriesWriter& series) {
     m_book.lastCollisions = st.collisions;
     m_book.lastVirial = e.collisionalVirial();
     m_book.lastKinetic = kinetic;
+    m_book.lastVolumeFraction = fractionNow;
 }
 
 template <int D, class Queue>
