@@ -399,7 +399,10 @@ int EdmdRun<D, Queue>::run() {
             snapshot(engine, pvd, snapshotPoints(engine));
             while (m_book.nextSnapshotTime <= engine.time()) m_book.nextSnapshotTime += snapEvery;
         }
-        if (finished || engine.time() >= m_book.nextCheckpointTime) {
+        // Collision-count runs without an interval: a checkpoint every tenth of the rows.
+        const bool rowCheckpoint = byCollisions && m_scene.output.checkpointInterval == 0 &&
+                                   (m_book.nextRow - 1) % std::max<std::int64_t>(1, E.seriesPoints / 10) == 0;
+        if (finished || rowCheckpoint || engine.time() >= m_book.nextCheckpointTime) {
             if (finished) snapshot(engine, pvd, snapshotPoints(engine));
             series.flush();
             writeCheckpoint(engine);
