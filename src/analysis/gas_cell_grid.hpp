@@ -133,4 +133,28 @@ void forEachCellPair(const CellGrid& grid, Fn&& fn) {
     }
 }
 
+/// Calls fn(a, b, distance2) once for every unordered pair of slots a, b in the same or adjacent
+/// cells, with their squared minimum-image centre distance [m^2]; the callers filter by distance.
+template <int D, class Fn>
+void forEachNearPair(const CellGrid& grid, Fn&& fn) {
+    const Real* x = grid.x.data();
+    forEachCellPair(grid, [&](std::uint32_t cellA, std::uint32_t cellB) {
+        const std::uint32_t aEnd = grid.cellStart[cellA + 1];
+        const std::uint32_t bBegin = grid.cellStart[cellB];
+        const std::uint32_t bEnd = grid.cellStart[cellB + 1];
+        for (std::uint32_t a = grid.cellStart[cellA]; a < aEnd; ++a) {
+            const Real* xa = x + std::size_t{a} * D;
+            for (std::uint32_t b = (cellA == cellB) ? a + 1 : bBegin; b < bEnd; ++b) {
+                const Real* xb = x + std::size_t{b} * D;
+                Real distance2 = 0;  // [m^2]
+                for (int d = 0; d < D; ++d) {
+                    const Real dx = grid.minimumImage(xb[d] - xa[d], d);
+                    distance2 += dx * dx;
+                }
+                fn(a, b, distance2);
+            }
+        }
+    });
+}
+
 }  // namespace granulab::analysis

@@ -53,26 +53,10 @@ private:
 template <int D>
 void linkNeighbours(const CellGrid& grid, const std::vector<Real>& slotRadius, Real linkFactor,
                     UnionFind& sets) {
-    const Real* x = grid.x.data();
     const Real* radius = slotRadius.data();
-    forEachCellPair(grid, [&](std::uint32_t cellA, std::uint32_t cellB) {
-        const std::uint32_t aEnd = grid.cellStart[cellA + 1];
-        const std::uint32_t bBegin = grid.cellStart[cellB];
-        const std::uint32_t bEnd = grid.cellStart[cellB + 1];
-        for (std::uint32_t a = grid.cellStart[cellA]; a < aEnd; ++a) {
-            const Real* xa = x + std::size_t{a} * D;
-            const Real ra = radius[a];
-            for (std::uint32_t b = (cellA == cellB) ? a + 1 : bBegin; b < bEnd; ++b) {
-                const Real* xb = x + std::size_t{b} * D;
-                Real distance2 = 0;  // [m^2]
-                for (int d = 0; d < D; ++d) {
-                    const Real dx = grid.minimumImage(xb[d] - xa[d], d);
-                    distance2 += dx * dx;
-                }
-                const Real reach = (ra + radius[b]) * linkFactor;  // [m]
-                if (distance2 < reach * reach) sets.unite(a, b);
-            }
-        }
+    forEachNearPair<D>(grid, [&](std::uint32_t a, std::uint32_t b, Real distance2) {
+        const Real reach = (radius[a] + radius[b]) * linkFactor;  // [m]
+        if (distance2 < reach * reach) sets.unite(a, b);
     });
 }
 

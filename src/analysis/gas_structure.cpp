@@ -22,28 +22,13 @@ namespace {
 /// Adds every unordered pair with minimum-image distance < rMax to its bin of `counts`.
 template <int D>
 void histogramPairs(const CellGrid& grid, Real rMax, Real binWidth, std::vector<std::uint64_t>& counts) {
-    const Real* x = grid.x.data();
     const Real rMax2 = rMax * rMax;  // [m^2]
     const Real inverseWidth = 1 / binWidth;
     const std::size_t lastBin = counts.size() - 1;
-    forEachCellPair(grid, [&](std::uint32_t cellA, std::uint32_t cellB) {
-        const std::uint32_t aEnd = grid.cellStart[cellA + 1];
-        const std::uint32_t bBegin = grid.cellStart[cellB];
-        const std::uint32_t bEnd = grid.cellStart[cellB + 1];
-        for (std::uint32_t a = grid.cellStart[cellA]; a < aEnd; ++a) {
-            const Real* xa = x + std::size_t{a} * D;
-            for (std::uint32_t b = (cellA == cellB) ? a + 1 : bBegin; b < bEnd; ++b) {
-                const Real* xb = x + std::size_t{b} * D;
-                Real distance2 = 0;  // [m^2]
-                for (int d = 0; d < D; ++d) {
-                    const Real dx = grid.minimumImage(xb[d] - xa[d], d);
-                    distance2 += dx * dx;
-                }
-                if (distance2 >= rMax2) continue;
-                const auto bin = static_cast<std::size_t>(std::sqrt(distance2) * inverseWidth);
-                ++counts[std::min(bin, lastBin)];
-            }
-        }
+    forEachNearPair<D>(grid, [&](std::uint32_t, std::uint32_t, Real distance2) {
+        if (distance2 >= rMax2) return;
+        const auto bin = static_cast<std::size_t>(std::sqrt(distance2) * inverseWidth);
+        ++counts[std::min(bin, lastBin)];
     });
 }
 
