@@ -68,7 +68,8 @@ void checkSize(Checker& c, const model::SizeDistDef& s, const SourceLoc& loc, co
 void checkStatic(const model::SceneDef& sc, Checker& c, const std::vector<std::string>& names) {
     auto& d = c.diags();
     if (sc.run.engine != "dem")
-        d.error(sc.run.loc, "run.engine", fmt::format("engine '{}' is not available in this version; allowed: dem", sc.run.engine));
+        d.error(sc.run.loc, "run.engine", fmt::format("engine '{}' is not validated here (edmd scenes go through validateEdmd); allowed: dem",
+                                                      sc.run.engine));
     if (sc.run.dimension != 2)
         d.error(sc.run.loc, "run.dimension", fmt::format("the dem engine is two-dimensional; allowed: 2, got {}", sc.run.dimension));
     c.positive(sc.run.loc, "run.end_time", sc.run.endTime, "s");
