@@ -3,6 +3,7 @@
 // (edmd Eq. 5.29-5.31, spec 7 item 32).
 #include "app/analyze.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fmt/format.h>
@@ -16,6 +17,7 @@
 #include "app/run.hpp"
 #include "core/error.hpp"
 #include "io/csv_writers.hpp"
+#include "io/gas_analysis_files.hpp"
 
 namespace granulab::app {
 
@@ -113,46 +115,19 @@ int analyzeCommand(const AnalyzeOptions& opt) {
     if (n == 0) badInput(finalPath, "no particles");
     const double a = summary.value("radius", points.radius[0]);
     fs::create_directories(opt.dir + "/analysis");
-    std::string text;
-    // g(r) and its contact value.
-    double minEdge = 1e300;
-    for (int d = 0; d < D; ++d)
-        if (points.periodic[d]) minEdge = std::min(minEdge, points.box[d]);
-    const double rMax = std::min(opt.rMaxRadii * a, 0.499 * minEdge);
-    double contact = std::nan("");
-    if (rMax > 2.2 * a) {
-        const auto gr = analysis::pairCorrelation(points, rMax, static_cast<std::size_t>(opt.bins));
-        try {
-            contact = analysis::gContact(gr, 2 * a);
-        } catch (const std::invalid_argument&) {
-        }
-        text = "r,g\n";
-        for (std::size_t k = 0; k < gr.r.size(); ++k) text += fmt::format("{:.10g},{:.10g}\n", gr.r[k], gr.g[k]);
-        io::writeFileAtomically(opt.dir + "/analysis/final_gr.csv", text);
-    }
     const auto vel = analysis::velocityStats(points);
-    const auto hist = analysis::velocityHistogram(points, 80);
-    text = "v";
-    for (int d = 0; d < D; ++d) text += std::string(",p_") + axes[d];
-    text += "\n";
-    for (std::size_t k = 0; k < hist.v.size(); ++k) {
-        text += fmt::format("{:.10g}", hist.v[k]);
-        for (int d = 0; d < D; ++d) text += fmt::format(",{:.10g}", hist.density[d][k]);
-        text += "\n";
-    }
-    io::writeFileAtomically(opt.dir + "/analysis/final_velocity.csv", text);
     analysis::DensityParams dp;
     dp.particlesPerBin = opt.particlesPerBin;
     const auto dens = analysis::densityDistribution(points, dp);
-    text = "nu,probability_density\n";
-    for (std::size_t k = 0; k < dens.nu.size(); ++k) text += fmt::format("{:.10g},{:.10g}\n", dens.nu[k], dens.probabilityDensity[k]);
-    io::writeFileAtomically(opt.dir + "/analysis/final_density.csv", text);
-    const auto clusters = analysis::findClusters(points, opt.delta);
-    const auto cs = analysis::computeClusterStats(clusters.sizes, n);
-    text = "s,n_s,n_s_smoothed\n";
-    for (std::size_t s = 1; s < cs.sizeCounts.size(); ++s)
-        if (cs.smoothedCounts[s] > 0) text += fmt::format("{},{},{:.10g}\n", s, cs.sizeCounts[s], cs.smoothedCounts[s]);
-    io::writeFileAtomically(opt.dir + "/analysis/final_clusters.csv", text);
+    const auto cs = analysis::computeClusterStats(analysis::findClusters(points, opt.delta).sizes, n);
+    io::GasAnalysisSettings settings;
+    settings.radius = a;
+    settings.rMaxRadii = opt.rMaxRadii;
+    settings.grBins = static_cast<std::size_t>(opt.bins);
+    settings.clusterDelta = opt.delta;
+    const double contact =
+        io::writeGasAnalysisFiles(opt.dir + "/analysis/final_{}.csv", points, dens, cs, settings, summary.value("sim_time", 0.0))
+            .gContact;
 
     // tau_p from the series (peak of M'_2 on a logarithmic tau axis, edmd Eq. 5.15).
     double tauP = std::nan("");
@@ -170,7 +145,9 @@ int analyzeCommand(const AnalyzeOptions& opt) {
                 m2.push_back(std::atof(c[static_cast<std::size_t>(cm2)].c_str()));
             }
         }
-        if (logTau.size() >= 3) tauP = std::exp(analysis::tauPeak(logTau, m2));
+        // A maximum at the last row is no peak yet: M'_2 is still rising (tau_p is reported as NaN).
+        const bool peaked = logTau.size() >= 3 && std::max_element(m2.begin(), m2.end()) != m2.end() - 1;
+        if (peaked) tauP = std::exp(analysis::tauPeak(logTau, m2));
     }
     nlohmann::json js = {{"particles", n},
                          {"g_contact", contact},
@@ -195,6 +172,7 @@ int analyzeCommand(const AnalyzeOptions& opt) {
         fmt::print("  clusters (gap < {} d): {}, M1 {:.4g}, M2 {:.4g}, M'2 {:.4g}, largest {} (q_x = {:.4f})\n", opt.delta,
                    cs.clusterCount, cs.moment[1], cs.moment[2], cs.reducedMoment[2], cs.largest, cs.largestFraction);
         if (std::isfinite(tauP)) fmt::print("  tau_p (peak of M'_2 in series.csv) {:.4g}\n", tauP);
+        else fmt::print("  tau_p: M'_2 has no peak in series.csv yet (still rising at the last row)\n");
         fmt::print("  files: {}/analysis/final_{{gr,velocity,density,clusters}}.csv, final_summary.json\n", opt.dir);
     }
     return kExitOk;

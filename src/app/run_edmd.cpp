@@ -13,6 +13,7 @@
 #include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "analysis/gas_clusters.hpp"
 #include "analysis/gas_structure.hpp"
@@ -23,6 +24,7 @@
 #include "core/timer.hpp"
 #include "core/version.hpp"
 #include "io/csv_writers.hpp"
+#include "io/gas_analysis_files.hpp"
 #include "io/vtk_writer.hpp"
 
 namespace granulab::app {
@@ -60,9 +62,16 @@ public:
 
 private:
     std::vector<std::string> columns() const;
+    /// The snapshot and the measurements that series rows and snapshots share, made once per stop.
+    struct Measurement {
+        analysis::PointSet points;
+        analysis::DensityDistribution density;
+        std::optional<analysis::ClusterStats> clusters;
+    };
+    Measurement measure(const Engine& e, bool clusters) const;
     analysis::PointSet snapshotPoints(const Engine& e) const;
-    void seriesRow(const Engine& e, io::SeriesWriter& series);
-    void snapshot(const Engine& e, io::PvdWriter& pvd, const analysis::PointSet& points);
+    void seriesRow(const Engine& e, io::SeriesWriter& series, const Measurement& m);
+    void snapshot(const Engine& e, io::PvdWriter& pvd, Measurement& m);
     void writeCheckpoint(const Engine& e) const;
     void readCheckpoint(Engine& e);
     Real rowTime(std::int64_t row) const;
@@ -133,8 +142,18 @@ analysis::PointSet EdmdRun<D, Queue>::snapshotPoints(const Engine& e) const {
 }
 
 template <int D, class Queue>
-void EdmdRun<D, Queue>::seriesRow(const Engine& e, io::SeriesWriter& series) {
-    const auto points = snapshotPoints(e);
+typename EdmdRun<D, Queue>::Measurement EdmdRun<D, Queue>::measure(const Engine& e, bool clusters) const {
+    Measurement m;
+    m.points = snapshotPoints(e);
+    m.density = analysis::densityDistribution(m.points);
+    if (clusters)
+        m.clusters = analysis::computeClusterStats(analysis::findClusters(m.points, m_scene.edmd.clusterDelta).sizes, e.size());
+    return m;
+}
+
+template <int D, class Queue>
+void EdmdRun<D, Queue>::seriesRow(const Engine& e, io::SeriesWriter& series, const Measurement& m) {
+    const auto& points = m.points;
     const auto vel = analysis::velocityStats(points);
     const Real n = static_cast<Real>(e.size());
     const Real t = e.time();
@@ -154,7 +173,6 @@ void EdmdRun<D, Queue>::seriesRow(const Engine& e, io::SeriesWriter& series) {
     const Real meanSpeed = std::sqrt(std::pow(2.0, D) / kPi) * std::sqrt(vel.temperature / m_meanMass);
     const Real tau = m_setup.lambda > 0 ? m_setup.lambda * t / (2 * D * m_setup.tE) : 0;
     const Real tHaff = m_setup.lambda > 0 ? m_scene.edmd.temperature / ((1 + tau) * (1 + tau)) : m_scene.edmd.temperature;
-    const auto density = analysis::densityDistribution(points);
     // Volume fraction with the current radii (growing spheres change it), averaged over the row
     // interval like the pressure, so that an equation of state can be read off one row.
     Real particleVolume = 0;
@@ -183,12 +201,11 @@ void EdmdRun<D, Queue>::seriesRow(const Engine& e, io::SeriesWriter& series) {
                                st.collisions ? static_cast<double>(st.tcElastic) / static_cast<double>(st.collisions) : 0.0,
                                vel.pooled.kurtosis};
     for (int d = 0; d < D; ++d) row.push_back(vel.axis[d].kurtosis);
-    for (const Real q : density.quantiles) row.push_back(q);
+    for (const Real q : m.density.quantiles) row.push_back(q);
     m_lastRow = {{"time", t}, {"tau", tau}, {"temperature", vel.temperature}, {"collision_frequency", frequency},
                  {"reduced_pressure", reduced}, {"kurtosis", vel.pooled.kurtosis}};
-    if (m_scene.edmd.clusters) {
-        const auto clusters = analysis::findClusters(points, m_scene.edmd.clusterDelta);
-        const auto cs = analysis::computeClusterStats(clusters.sizes, e.size());
+    if (m.clusters) {
+        const auto& cs = *m.clusters;
         for (const double v : {static_cast<double>(cs.clusterCount), cs.moment[1], cs.moment[2], cs.reducedMoment[1],
                                cs.reducedMoment[2], static_cast<double>(cs.largest), cs.largestFraction})
             row.push_back(v);
@@ -204,7 +221,7 @@ void EdmdRun<D, Queue>::seriesRow(const Engine& e, io::SeriesWriter& series) {
 }
 
 template <int D, class Queue>
-void EdmdRun<D, Queue>::snapshot(const Engine& e, io::PvdWriter& pvd, const analysis::PointSet& points) {
+void EdmdRun<D, Queue>::snapshot(const Engine& e, io::PvdWriter& pvd, Measurement& m) {
     const int index = static_cast<int>(m_book.nextSnapshot++);
     if (m_scene.output.vtk) {
         std::vector<std::uint64_t> ids(e.size());
@@ -214,52 +231,20 @@ void EdmdRun<D, Queue>::snapshot(const Engine& e, io::PvdWriter& pvd, const anal
             collisions[i] = static_cast<double>(e.collisions(i));
         }
         const std::string file = io::snapshotFileName("gas", index);
-        io::writeGasVtp(m_dir + "/" + file, points, ids, collisions, e.time());
+        io::writeGasVtp(m_dir + "/" + file, m.points, ids, collisions, e.time());
         pvd.add(e.time(), 0, file);
         pvd.write();
     }
     if (!m_scene.edmd.analysisFiles) return;
     // Analysis files (spec 5.2): g(r), p(v), local density distribution, cluster sizes.
     fs::create_directories(m_dir + "/analysis");
-    const std::string stem = fmt::format("{}/analysis/{{}}_{:06d}.csv", m_dir, index);
-    const Real header = e.time();
-    Real minEdge = std::numeric_limits<Real>::infinity();
-    for (int d = 0; d < D; ++d)
-        if (points.periodic[d]) minEdge = std::min(minEdge, points.box[d]);
-    const Real a = m_setup.init.radius;
-    const Real rMax = std::min(10 * a, 0.499 * minEdge);
-    std::string text;
-    if (rMax > 2 * a) {
-        const auto gr = analysis::pairCorrelation(points, rMax, 200);
-        text = fmt::format("# pair correlation g(r) at t = {:.10g} s (edmd Eq. 5.10, minimum image); r [m]\nr,g\n", header);
-        for (std::size_t k = 0; k < gr.r.size(); ++k) text += fmt::format("{:.10g},{:.10g}\n", gr.r[k], gr.g[k]);
-        io::writeFileAtomically(fmt::format(fmt::runtime(stem), "gr"), text);
-    }
-    const auto hist = analysis::velocityHistogram(points, 80);
-    text = fmt::format("# velocity-component densities p(v) at t = {:.10g} s [s/m]; plot ln p against v^2\nv", header);
-    for (int d = 0; d < D; ++d) text += std::string(",p_") + "xyz"[d];
-    text += "\n";
-    for (std::size_t k = 0; k < hist.v.size(); ++k) {
-        text += fmt::format("{:.10g}", hist.v[k]);
-        for (int d = 0; d < D; ++d) text += fmt::format(",{:.10g}", hist.density[d][k]);
-        text += "\n";
-    }
-    io::writeFileAtomically(fmt::format(fmt::runtime(stem), "velocity"), text);
-    const auto dens = analysis::densityDistribution(points);
-    text = fmt::format("# local volume fraction distribution at t = {:.10g} s, bins of ~40 particles; quantiles 1/10/25/50/75/90/99 %:",
-                       header);
-    for (const Real q : dens.quantiles) text += fmt::format(" {:.6g}", q);
-    text += "\nnu,probability_density\n";
-    for (std::size_t k = 0; k < dens.nu.size(); ++k) text += fmt::format("{:.10g},{:.10g}\n", dens.nu[k], dens.probabilityDensity[k]);
-    io::writeFileAtomically(fmt::format(fmt::runtime(stem), "density"), text);
-    const auto clusters = analysis::findClusters(points, m_scene.edmd.clusterDelta);
-    const auto cs = analysis::computeClusterStats(clusters.sizes, e.size());
-    text = fmt::format("# cluster sizes at t = {:.10g} s, gap < {} x diameter (edmd Eq. 5.11); n_s and the hole-smoothed "
-                       "n_s of footnote 5\ns,n_s,n_s_smoothed\n",
-                       header, m_scene.edmd.clusterDelta);
-    for (std::size_t s = 1; s < cs.sizeCounts.size(); ++s)
-        if (cs.smoothedCounts[s] > 0) text += fmt::format("{},{},{:.10g}\n", s, cs.sizeCounts[s], cs.smoothedCounts[s]);
-    io::writeFileAtomically(fmt::format(fmt::runtime(stem), "clusters"), text);
+    if (!m.clusters)
+        m.clusters = analysis::computeClusterStats(analysis::findClusters(m.points, m_scene.edmd.clusterDelta).sizes, e.size());
+    io::GasAnalysisSettings settings;
+    settings.radius = m_setup.init.radius;
+    settings.clusterDelta = m_scene.edmd.clusterDelta;
+    io::writeGasAnalysisFiles(fmt::format("{}/analysis/{{}}_{:06d}.csv", m_dir, index), m.points, m.density, *m.clusters,
+                              settings, e.time());
 }
 
 template <int D, class Queue>
@@ -342,8 +327,9 @@ int EdmdRun<D, Queue>::run() {
         pvd.truncateAfter(engine.time());
     }
     if (!resumed) {
-        seriesRow(engine, series);
-        snapshot(engine, pvd, snapshotPoints(engine));
+        Measurement m = measure(engine, E.clusters);
+        seriesRow(engine, series, m);
+        snapshot(engine, pvd, m);
         m_book.nextSnapshotTime = snapEvery > 0 ? snapEvery : std::numeric_limits<Real>::infinity();
         m_book.nextCheckpointTime = checkpointEvery > 0 ? checkpointEvery : std::numeric_limits<Real>::infinity();
         series.flush();
@@ -380,7 +366,8 @@ int EdmdRun<D, Queue>::run() {
             if (stop < tRow) {  // a snapshot or checkpoint only
                 const double t0 = wallSeconds();
                 if (stop >= m_book.nextSnapshotTime) {
-                    snapshot(engine, pvd, snapshotPoints(engine));
+                    Measurement m = measure(engine, false);
+                    snapshot(engine, pvd, m);
                     m_book.nextSnapshotTime += snapEvery;
                 }
                 if (stop >= m_book.nextCheckpointTime) {
@@ -394,16 +381,17 @@ int EdmdRun<D, Queue>::run() {
             ++m_book.nextRow;
         }
         const double t0 = wallSeconds();
-        seriesRow(engine, series);
+        Measurement m = measure(engine, E.clusters);
+        seriesRow(engine, series, m);
         if (!finished && engine.time() >= m_book.nextSnapshotTime) {
-            snapshot(engine, pvd, snapshotPoints(engine));
+            snapshot(engine, pvd, m);
             while (m_book.nextSnapshotTime <= engine.time()) m_book.nextSnapshotTime += snapEvery;
         }
         // Collision-count runs without an interval: a checkpoint every tenth of the rows.
         const bool rowCheckpoint = byCollisions && m_scene.output.checkpointInterval == 0 &&
                                    (m_book.nextRow - 1) % std::max<std::int64_t>(1, E.seriesPoints / 10) == 0;
         if (finished || rowCheckpoint || engine.time() >= m_book.nextCheckpointTime) {
-            if (finished) snapshot(engine, pvd, snapshotPoints(engine));
+            if (finished) snapshot(engine, pvd, m);
             series.flush();
             writeCheckpoint(engine);
             while (m_book.nextCheckpointTime <= engine.time()) m_book.nextCheckpointTime += checkpointEvery;
@@ -510,11 +498,14 @@ int EdmdRun<D, Queue>::run() {
     if (!m_opt.quiet) {
         fmt::print(stderr, "done: {} collisions, {} events in {:.3g} s ({:.3g} collisions/s, {:.3g} events/s)\n", collisions,
                    events, engineSeconds, js["collisions_per_s"].get<double>(), js["events_per_s"].get<double>());
-        fmt::print("results in {}/ : summary.json, series.csv, final.csv, snapshots.pvd, analysis/, checkpoint.bin{}\n", m_dir,
+        fmt::print("results in {}/ : summary.json, series.csv, final.csv{}{}, checkpoint.bin{}\n", m_dir,
+                   m_scene.output.vtk ? ", snapshots.pvd" : "", E.analysisFiles ? ", analysis/" : "",
                    theory.is_null() ? "" : ", theory.csv");
-        fmt::print("view in ParaView: paraview {}/snapshots.pvd  (Glyph filter, type Sphere, scale array 'radius', factor 2; "
-                   "colour by 'collisions')\n",
-                   m_dir);
+        if (m_scene.output.vtk)
+            fmt::print("view in ParaView: paraview {}/snapshots.pvd  (Glyph filter, type Sphere, scale array 'radius', "
+                       "factor 2; colour by 'collisions')\n",
+                       m_dir);
+        fmt::print("measure the final state: granulab analyze {}\n", m_dir);
     }
     return kExitOk;
 }

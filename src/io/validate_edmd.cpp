@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 #include "analysis/kinetic_theory.hpp"
 
@@ -62,11 +63,11 @@ EdmdSetup validateEdmd(const model::SceneDef& sc) {
         d.error(loc, "edmd.periodic", fmt::format("has {} entries; run.dimension = {} needs {}", e.periodic.size(), D, D));
     if (!e.gravity.empty() && e.gravity.size() != static_cast<std::size_t>(D))
         d.error(loc, "edmd.gravity", fmt::format("has {} components; run.dimension = {} needs {}", e.gravity.size(), D, D));
-    for (const char* key : {"snapshot_interval", "series_interval", "checkpoint_interval"}) {
-        const Real v = std::string(key) == "snapshot_interval" ? sc.output.snapshotInterval
-                       : std::string(key) == "series_interval" ? sc.output.seriesInterval : sc.output.checkpointInterval;
-        if (!(v >= 0)) d.error(sc.output.loc, std::string("output.") + key, fmt::format("must be >= 0 [s], got {}", v));
-    }
+    const std::pair<const char*, Real> intervals[] = {{"output.snapshot_interval", sc.output.snapshotInterval},
+                                                      {"output.series_interval", sc.output.seriesInterval},
+                                                      {"output.checkpoint_interval", sc.output.checkpointInterval}};
+    for (const auto& [key, value] : intervals)
+        if (!(value >= 0)) d.error(sc.output.loc, key, fmt::format("must be >= 0 [s], got {}", value));
     // The box / count / volume-fraction triangle: exactly two of the three.
     const int given = (!e.box.empty() ? 1 : 0) + (e.count > 0 ? 1 : 0) + (e.volumeFraction > 0 ? 1 : 0);
     if (e.count < 0) d.error(loc, "edmd.count", fmt::format("must be > 0, got {}", e.count));
