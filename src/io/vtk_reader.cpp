@@ -163,7 +163,9 @@ ParticleFrame readParticlesVtp(const std::string& path) {
     const std::size_t nPoints = points.size() / 3;
     const auto radius = f.read<double>("PointData", "radius", "Float64", 1);
     const auto speed = f.read<double>("PointData", "speed", "Float64", 1);
-    const auto angle = f.read<double>("PointData", "angle", "Float64", 1);
+    // Smooth hard spheres (edmd snapshots) have no orientation: no angle array, angle 0.
+    const auto angle = f.has("PointData", "angle") ? f.read<double>("PointData", "angle", "Float64", 1)
+                                                   : std::vector<double>(nPoints, 0.0);
     const auto id = f.read<std::int64_t>("PointData", "id", "Int64", 1);
     if (radius.size() != nPoints || speed.size() != nPoints || angle.size() != nPoints || id.size() != nPoints)
         f.fail("point data arrays differ in length from Points");

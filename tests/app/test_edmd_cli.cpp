@@ -60,6 +60,10 @@ TEST(EdmdCli, RunWritesTheContractOutputs) {
                              "analysis/clusters_000004.csv", "analysis/velocity_000001.csv", "analysis/density_000002.csv"})
         EXPECT_TRUE(std::filesystem::exists(scratch.path / "out" / file)) << file;
     EXPECT_EQ(test::readText(scratch.path / "out/final.csv").rfind("id,shape,x,y,vx,vy,omega,radius,mass,collisions\n", 0), 0u);
+    // The gas snapshots render like DEM ones (smooth spheres carry no angle array).
+    const auto render = test::runGranulab("render out --png -q", scratch.path);
+    EXPECT_EQ(render.status, 0) << render.output;
+    EXPECT_TRUE(std::filesystem::exists(scratch.path / "out/png/frame_000000.png"));
 }
 
 TEST(EdmdCli, ResumeIsBitForBitAndRunsAreDeterministic) {
