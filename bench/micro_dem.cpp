@@ -23,7 +23,7 @@
 #include "dem/setup.hpp"
 #include "dem/world.hpp"
 #include "io/scene_reader.hpp"
-#include "io/validate.hpp"
+#include "app/dem/dem_engine.hpp"
 
 namespace {
 
@@ -48,7 +48,7 @@ mu = 0.5
 /// Builds an initialized world from scene text (reader -> validate -> makeWorld).
 std::unique_ptr<dem::World> worldFromText(const std::string& text) {
     const model::SceneDef scene = io::readSceneText(text, "<micro_dem>");
-    const io::ValidatedScene valid = io::validate(scene);
+    const dem::PreparedScene valid = app::checkAndPrepareDem(scene);
     auto world = std::make_unique<dem::World>(dem::makeWorld(scene, valid.initial));
     world->initialize();
     return world;

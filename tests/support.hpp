@@ -14,13 +14,14 @@
 
 #include "dem/setup.hpp"
 #include "io/scene_reader.hpp"
-#include "io/validate.hpp"
+#include "app/dem/dem_engine.hpp"
+#include "model/material_names.hpp"
 
 namespace granulab::test {
 
 inline dem::World makeWorldFromToml(const std::string& toml, const std::vector<io::Override>& overrides = {}) {
     const model::SceneDef scene = io::readSceneText(toml, "test.toml", overrides);
-    const io::ValidatedScene v = io::validate(scene);
+    const dem::PreparedScene v = app::checkAndPrepareDem(scene);
     dem::World w = dem::makeWorld(scene, v.initial);
     w.initialize();
     return w;

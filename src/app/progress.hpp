@@ -9,14 +9,18 @@ namespace granulab::app {
 
 class Progress {
 public:
-    Progress(double endTime, bool quiet);
-    /// Called every step; cheap unless an update is due.
+    /// `end`: the end position, simulated time [s] or (byCount) the engine's count; `unit`: what
+    /// the rate counts.
+    Progress(double end, bool quiet, std::string unit = "steps", bool byCount = false);
+    /// Called at every stop of the run loop; cheap unless an update is due.
     void update(double simTime, std::int64_t steps);
     void finish(double simTime, std::int64_t steps);
 
 private:
     void print(double simTime, std::int64_t steps, bool final);
     double m_endTime;
+    std::string m_unit;
+    bool m_byCount;
     bool m_quiet;
     bool m_tty;
     double m_start;

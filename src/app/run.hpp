@@ -1,17 +1,15 @@
 // SPDX-License-Identifier: MIT
-// `granulab run`: read + validate a scene, run the engine, write the outputs of the user
-// contract (DESIGN.md), checkpoint and resume.
+// `granulab run`: reads a scene, builds the engine of its run.engine through the engine table
+// and runs it in the one run loop (app/run_loop.hpp); writes the outputs of the user contract
+// (DESIGN.md), checkpoints and resumes.
 #pragma once
-#include <cstddef>
 #include <string>
 #include <vector>
 
+#include "app/exit_codes.hpp"
 #include "io/scene_reader.hpp"
 
 namespace granulab::app {
-
-/// Exit statuses of the command line.
-enum ExitCode : int { kExitOk = 0, kExitFailure = 1, kExitBadInput = 2, kExitUnstable = 3 };
 
 struct RunOptions {
     std::string scene;
@@ -25,8 +23,5 @@ int runCommand(const RunOptions& options);
 
 /// Default output folder for a scene path: out/<stem>.
 std::string defaultOutDir(const std::string& scenePath);
-
-/// Peak resident memory of this process [bytes] (VmHWM of /proc/self/status; 0 if unknown).
-std::size_t peakRssBytes();
 
 }  // namespace granulab::app

@@ -2,6 +2,8 @@
 // World construction from Defs; contact-time analysis of the linear law (docs/physics).
 #include "dem/setup.hpp"
 
+#include "model/material_names.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
@@ -11,14 +13,8 @@
 
 namespace granulab::dem {
 
-std::vector<std::string> materialNames(const model::SceneDef& scene) {
-    std::vector<std::string> names;
-    for (const auto& m : scene.materials) names.push_back(m.name);
-    return names;
-}
-
 LawTable buildLawTable(const model::SceneDef& scene, Diagnostics& diags) {
-    const auto names = materialNames(scene);
+    const auto names = model::materialNames(scene);
     const auto n = static_cast<std::uint32_t>(names.size());
     LawTable table(n);
     std::vector<int> priority(static_cast<std::size_t>(n) * n, -1);  // 0 wildcard, 1 half, 2 exact
@@ -156,7 +152,7 @@ TimeStepAdvice adviseTimeStep(const LawTable& laws, const std::vector<std::strin
     return advice;
 }
 
-void adviseFaceTimeStep(const LawTable& laws, const model::InitialParticles& initial, const std::vector<Real>& density,
+void adviseFaceTimeStep(const LawTable& laws, const InitialParticles& initial, const std::vector<Real>& density,
                         TimeStepAdvice& advice) {
     const auto n = laws.materialCount();
     std::vector<Real> stiffest(n, 0);  // largest area-law E [N/m] any contact of material m can have
@@ -223,17 +219,17 @@ WorldConfig makeWorldConfig(const model::SceneDef& scene, Real maxRadius) {
         d.gamma = w.gamma;
         d.gammaRotation = w.gammaRotation;
         // Window [from, to) in time -> force evaluations at steps k with from <= k dt < to.
-        d.fromStep = static_cast<std::int64_t>(std::ceil(w.from / c.dt - 1e-9));
-        d.toStep = w.to >= 1e299 ? INT64_MAX : static_cast<std::int64_t>(std::ceil(w.to / c.dt - 1e-9));
+        d.fromStep = firstStepAtOrAfter(w.from, c.dt);
+        d.toStep = w.to >= 1e299 ? INT64_MAX : firstStepAtOrAfter(w.to, c.dt);
         c.damping.push_back(d);
     }
     return c;
 }
 
-World makeWorld(const model::SceneDef& scene, const model::InitialParticles& initial) {
+World makeWorld(const model::SceneDef& scene, const InitialParticles& initial) {
     Diagnostics ignored;  // the scene was validated before
     LawTable laws = buildLawTable(scene, ignored);
-    const auto names = materialNames(scene);
+    const auto names = model::materialNames(scene);
     std::vector<Real> density(names.size(), 0);
     for (std::size_t m = 0; m < scene.materials.size(); ++m) density[m] = scene.materials[m].density;
     const model::MassModel massModel = model::massModelOf(scene.dem.massModel);
@@ -243,14 +239,13 @@ World makeWorld(const model::SceneDef& scene, const model::InitialParticles& ini
     for (std::size_t k = 0; k < initial.particles.size(); ++k) {
         const auto& p = initial.particles[k];
         const Real rho = density[p.material];
+        const Real m = initialMass(initial, p, massModel, rho);
         if (p.shape == model::kDiskShape) {
-            const Real m = model::particleMass(massModel, rho, p.radius);
             store.add(static_cast<ParticleId>(k), p.position, p.velocity, p.angle, p.omega, p.radius, m,
                       model::particleInertia(massModel, m, p.radius), p.material);
         } else {  // gc2d Eq. 2.10-2.12 with the areal density [kg/m^2]
-            store.add(static_cast<ParticleId>(k), p.position, p.velocity, p.angle, p.omega, p.radius,
-                      rho * initial.shapes.area[p.shape], rho * initial.shapes.secondMoment[p.shape], p.material,
-                      p.shape);
+            store.add(static_cast<ParticleId>(k), p.position, p.velocity, p.angle, p.omega, p.radius, m,
+                      rho * initial.shapes.secondMoment[p.shape], p.material, p.shape);
         }
         rmax = std::max(rmax, p.radius);
     }

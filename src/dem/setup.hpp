@@ -8,13 +8,11 @@
 #include "core/error.hpp"
 #include "dem/law_table.hpp"
 #include "dem/world.hpp"
-#include "model/generate.hpp"
+#include "dem/generate.hpp"
+#include "dem/step_clock.hpp"
 #include "model/scene_def.hpp"
 
 namespace granulab::dem {
-
-/// Material names in table order (index = material id).
-std::vector<std::string> materialNames(const model::SceneDef& scene);
 
 /// Resolves the [[contact]] entries into a law per material pair; an exact pair overrides a
 /// "*" wildcard. Unknown laws, parameters and ranges go to `diags`.
@@ -50,13 +48,13 @@ std::string broadPhaseOf(const model::SceneDef& scene);
 /// (L_max the longest edge, l >= r_in / 2 between two grains, r_in the inradius) for every
 /// polygon particle and fills advice.faceAdvisedDt with the smallest (pi/10) sqrt(m / k_face).
 /// `density` by material index.
-void adviseFaceTimeStep(const LawTable& laws, const model::InitialParticles& initial, const std::vector<Real>& density,
+void adviseFaceTimeStep(const LawTable& laws, const InitialParticles& initial, const std::vector<Real>& density,
                         TimeStepAdvice& advice);
 
 /// Translates the scene's damping windows etc. into the engine configuration.
 WorldConfig makeWorldConfig(const model::SceneDef& scene, Real maxRadius);
 
 /// The world at t = 0 (call initialize() before stepping, or loadState()).
-World makeWorld(const model::SceneDef& scene, const model::InitialParticles& initial);
+World makeWorld(const model::SceneDef& scene, const InitialParticles& initial);
 
 }  // namespace granulab::dem

@@ -1,33 +1,54 @@
 // SPDX-License-Identifier: MIT
-// Checkpoint file (DESIGN.md "Contract": `granulab run --resume` continues bit for bit): a header
-// that identifies the scene, the output schedule counters and the engine's complete state.
+// The one checkpoint container of every engine (DESIGN.md "Contract": `granulab run --resume`
+// continues bit for bit). Layout, little-endian as the machine writes it:
+//   magic "GNABLCKT" (u64) | format version (u32) | engine name | scene identity (key, value
+//   pairs and their 64-bit fingerprint) | run bookkeeping | engine blob length (u64) | blob
+// The blob is the engine's own state (dem::World::saveState, edmd::Engine::saveState, ...).
+// Files of an older format version, and the unversioned edmd files of version 1, are refused
+// with a message naming their version.
 #pragma once
 #include <cstdint>
+#include <functional>
+#include <iosfwd>
 #include <string>
-
-#include "dem/world.hpp"
+#include <vector>
 
 namespace granulab::io {
 
-/// Output bookkeeping that must survive a resume.
-struct OutputCounters {
-    std::int64_t nextSnapshot = 0;  ///< index of the next VTK snapshot file
+/// What a checkpoint must share with the scene that resumes it: entries such as the integrator
+/// or the particle count. `key` names the scene key when the user can change it (dem.integrator).
+struct IdentityEntry {
+    std::string key;
+    std::string value;
+    bool operator==(const IdentityEntry&) const = default;
+};
+using SceneIdentity = std::vector<IdentityEntry>;
+
+/// 64-bit FNV-1a over the identity entries (stored, and compared before the entries).
+std::uint64_t fingerprint(const SceneIdentity& identity);
+
+/// Run bookkeeping that a resume restores (the output schedules are re-derived from the scene).
+struct RunBookkeeping {
+    std::int64_t nextSnapshot = 0;  ///< index of the next snapshot file
 };
 
-/// Identity of the scene a checkpoint belongs to (dt and particle count must match).
 struct CheckpointHeader {
-    double dt = 0;
-    std::uint64_t particles = 0;
-    std::uint64_t walls = 0;
-    std::string integrator;  ///< its state is part of the checkpoint
+    std::string engine;
+    SceneIdentity identity;
+    RunBookkeeping bookkeeping;
 };
 
-/// Writes `dir`/checkpoint.bin atomically (temporary file + rename).
-void writeCheckpoint(const std::string& dir, const CheckpointHeader& header, const OutputCounters& counters,
-                     const dem::World& world);
+/// The format version this build writes and reads.
+inline constexpr std::uint32_t kCheckpointVersion = 5;
 
-/// Loads `dir`/checkpoint.bin into `world`; throws std::runtime_error with a clear message if
-/// it is missing, corrupt or belongs to another scene.
-OutputCounters readCheckpoint(const std::string& dir, const CheckpointHeader& expected, dem::World& world);
+/// Writes `dir`/checkpoint.bin atomically; `saveEngine` writes the blob.
+void writeCheckpoint(const std::string& dir, const CheckpointHeader& header,
+                     const std::function<void(std::ostream&)>& saveEngine);
+
+/// Reads `dir`/checkpoint.bin: checks magic, version, engine and identity against `expected`
+/// (throws std::runtime_error with a message naming what differs and how to resume), then calls
+/// `loadEngine` on the blob and checks that it consumed exactly the blob. Returns the bookkeeping.
+RunBookkeeping readCheckpoint(const std::string& dir, const CheckpointHeader& expected,
+                              const std::function<void(std::istream&)>& loadEngine);
 
 }  // namespace granulab::io

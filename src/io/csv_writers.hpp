@@ -7,7 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "model/generate.hpp"
+#include "io/atomic_file.hpp"
+#include "model/mass_model.hpp"
 #include "model/particle_store.hpp"
 #include "model/shape_pool.hpp"
 
@@ -31,15 +32,13 @@ private:
     std::size_t m_columns = 0;
 };
 
-/// id, shape, x, y, vx, vy, angle, omega, radius, mass, material, corners; sorted by id.
+/// final.csv of a 2D particle store (io/final_csv.hpp): id, shape, x, y, vx, vy, angle, omega,
+/// radius, then mass, material, corners; sorted by id.
 /// shape is `disk` or `sphere` for round particles (after `massModel`, dem.mass_model) and
 /// `polygon` for particles whose shape is in `shapes`; corners is the polygon's corner count, 0
 /// for round particles. New columns go at the end, so readers of older files keep working.
 /// A shape index outside `shapes` throws std::invalid_argument.
 void writeFinalCsv(const std::string& path, const model::ParticleStore& s, const model::ShapePool& shapes,
                    const std::vector<std::string>& materialNames, model::MassModel massModel);
-
-/// Writes `text` to `path` through a temporary file and a rename (never a half-written file).
-void writeFileAtomically(const std::string& path, const std::string& text);
 
 }  // namespace granulab::io

@@ -1,39 +1,14 @@
 // SPDX-License-Identifier: MIT
-// Validation of an event-driven gas scene ([edmd], edmd spec sections 2 and 4): every range
-// and consistency check with file:line, the resolved box/count/volume fraction, the initial
-// state (lattice or random placement, Maxwell velocities) and the kinetic-theory scales the run
-// reports (t_E, tau, TC default). Throws SceneError listing every problem.
+// Def-level checks of an event-driven gas scene ([edmd], edmd spec sections 2 and 4): every
+// range, the box/count/volume-fraction triangle and the output intervals, reported with
+// file:line. The engine's set-up follows in edmd::resolveScene.
 #pragma once
-#include <cstdint>
-#include <string>
-#include <vector>
-
-#include "edmd/engine.hpp"
-#include "edmd/initial_state.hpp"
+#include "core/error.hpp"
 #include "model/scene_def.hpp"
 
 namespace granulab::io {
 
-struct EdmdSetup {
-    int dim = 3;
-    edmd::EngineConfig config;     ///< production run (restitution, TC, walls, gravity, growth)
-    edmd::InitialStateSpec init;   ///< resolved count, box and radii
-    Real volumeFraction = 0;       ///< nu of the initial state (Eq. 4.2-4.4; mean particle volume if polydisperse)
-    Real tE = 0;                   ///< [s] initial Enskog collision time 1/f_E(0) (Eq. 4.33, g from Eq. 4.52)
-    Real lambda = 0;               ///< 1 - eps^2 (Eq. 4.7), constant restitution
-    Real endTime = 0;              ///< [s] resolved end (run.end_time or edmd.end_tau); +inf with end_collisions
-    std::uint64_t endCollisions = 0;  ///< total collisions to run (edmd.end_collisions * N / 2), 0: unused
-    std::uint64_t equilibrationCollisions = 0;  ///< elastic pre-run (edmd.equilibrate * N / 2)
-    std::vector<std::string> warnings;
-};
-
-/// Checks the [edmd] scene; throws SceneError with all problems. Does not build the particles
-/// (makeEdmdState does, reporting placement failures with the scene location).
-EdmdSetup validateEdmd(const model::SceneDef& scene);
-
-/// The initial particles of a validated scene; placement failures become a SceneError at
-/// edmd.volume_fraction / edmd.count.
-template <int D>
-edmd::GasState<D> makeEdmdState(const model::SceneDef& scene, const EdmdSetup& setup);
+/// Adds every problem to `diags` (does not throw).
+void checkEdmdDef(const model::SceneDef& scene, Diagnostics& diags);
 
 }  // namespace granulab::io

@@ -5,6 +5,8 @@
 // each DataArray's `offset` points at its byte count, counted from the first byte after "_".
 #include "io/vtk_writer.hpp"
 
+#include "io/atomic_file.hpp"
+
 #include <bit>
 #include <charconv>
 #include <cmath>
@@ -51,16 +53,13 @@ public:
     }
 
     void save(const std::string& path) const {
-        const std::filesystem::path p(path);
-        if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
-        std::ofstream os(path, std::ios::binary | std::ios::trunc);
-        os << "<?xml version=\"1.0\"?>\n"
-           << "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" "
-              "header_type=\"UInt64\">\n  <PolyData>\n"
-           << m_xml << "  </PolyData>\n  <AppendedData encoding=\"raw\">\n_";
-        os.write(m_blob.data(), static_cast<std::streamsize>(m_blob.size()));
-        os << "\n  </AppendedData>\n</VTKFile>\n";
-        if (!os) throw std::runtime_error("cannot write " + path);
+        AtomicFile file(path);
+        file.write("<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" "
+                   "header_type=\"UInt64\">\n  <PolyData>\n" +
+                   m_xml + "  </PolyData>\n  <AppendedData encoding=\"raw\">\n_");
+        file.write(m_blob);
+        file.write("\n  </AppendedData>\n</VTKFile>\n");
+        file.commit();
     }
 
 private:
@@ -318,21 +317,13 @@ void PvdWriter::add(double time, int part, const std::string& relativeFile) {
 }
 
 void PvdWriter::write() const {
-    const std::string tmp = m_path + ".tmp";
-    {
-        std::ofstream os(tmp, std::ios::trunc);
-        os << "<?xml version=\"1.0\"?>\n"
-           << "<VTKFile type=\"Collection\" version=\"1.0\" byte_order=\"LittleEndian\" "
-              "header_type=\"UInt64\">\n  <Collection>\n";
-        for (const PvdEntry& e : m_entries)
-            os << "    <DataSet timestep=\"" << exactText(e.time) << "\" group=\"\" part=\"" << e.part
-               << "\" file=\"" << e.file << "\"/>\n";
-        os << "  </Collection>\n</VTKFile>\n";
-        if (!os) throw std::runtime_error("cannot write " + tmp);
-    }
-    std::error_code ec;
-    std::filesystem::rename(tmp, m_path, ec);
-    if (ec) throw std::runtime_error("cannot write " + m_path + ": " + ec.message());
+    std::string text = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"1.0\" byte_order=\"LittleEndian\" "
+                       "header_type=\"UInt64\">\n  <Collection>\n";
+    for (const PvdEntry& e : m_entries)
+        text += "    <DataSet timestep=\"" + exactText(e.time) + "\" group=\"\" part=\"" + std::to_string(e.part) +
+                "\" file=\"" + e.file + "\"/>\n";
+    text += "  </Collection>\n</VTKFile>\n";
+    writeFileAtomically(m_path, text);
 }
 
 void PvdWriter::load() {

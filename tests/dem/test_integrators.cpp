@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <sstream>
 
+#include "app/dem/dem_engine.hpp"
 #include "../support.hpp"
 
 using namespace granulab;
@@ -83,7 +84,7 @@ TEST(Integrators, EveryIntegratorResumesBitForBit) {
         SCOPED_TRACE(name);
         const std::vector<io::Override> ov = {io::parseOverride(std::string("dem.integrator=") + name)};
         const model::SceneDef sc = io::readScene(scene, ov);
-        const io::ValidatedScene v = io::validate(sc);
+        const dem::PreparedScene v = app::checkAndPrepareDem(sc);
         dem::World a = dem::makeWorld(sc, v.initial);
         a.initialize();
         for (int k = 0; k < 3000; ++k) a.step();

@@ -31,7 +31,7 @@ std::size_t slotOf(const model::ParticleStore& s, ParticleId id) {
 dem::World pressedWorld(const std::string& toml) {
     const model::SceneDef scene = io::readSceneText(toml, "test.toml", {});
     Diagnostics diags;
-    const model::InitialParticles initial = model::generateParticles(scene, dem::materialNames(scene), diags);
+    const dem::InitialParticles initial = dem::generateParticles(scene, model::materialNames(scene), diags);
     EXPECT_TRUE(diags.empty());
     dem::World w = dem::makeWorld(scene, initial);
     w.initialize();

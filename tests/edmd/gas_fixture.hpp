@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "analysis/kinetic_theory.hpp"
+#include "edmd/kinetic_theory.hpp"
 #include "core/rng.hpp"
 #include "analysis/point_set.hpp"
 #include "edmd/engine.hpp"
@@ -62,7 +62,7 @@ GasState<D> latticeGas(int n, Real L, Real a, std::uint64_t seed) {
 /// nu, started on the lattice (spec 4.2 steps 1-2). The engine starts elastic.
 template <int D>
 Engine<D> makeGas(std::uint64_t count, Real nu, std::uint64_t seed, const Restitution& rules = {}, Real tc = 0) {
-    const Real L = analysis::boxLengthFor(D, static_cast<Real>(count), nu, 1.0);
+    const Real L = edmd::boxLengthFor(D, static_cast<Real>(count), nu, 1.0);
     InitialStateSpec spec;
     spec.box = {L, L, L};
     spec.count = count;

@@ -8,10 +8,11 @@
 #include <cmath>
 #include <fmt/format.h>
 
+#include "app/dem/dem_engine.hpp"
 #include "geom/polygon.hpp"
 #include "io/scene_reader.hpp"
 #include "io/shape_checks.hpp"
-#include "io/validate.hpp"
+#include "geom/overlap_tests.hpp"
 
 using namespace granulab;
 
@@ -102,7 +103,7 @@ std::string particle(const std::string& shape, Real x, Real y, const std::string
 
 std::string errorsOf(const std::string& text) {
     try {
-        io::validate(io::readSceneText(text, "s.toml"));
+        app::checkAndPrepareDem(io::readSceneText(text, "s.toml"));
     } catch (const SceneError& e) {
         return e.what();
     }
@@ -126,7 +127,7 @@ TEST(ShapeInput, EveryKindReadsValidatesAndGenerates) {
     EXPECT_EQ(scene.shapes[4].sizeMode, "gauss");
     EXPECT_EQ(scene.shapes[4].cornerVariation, 1);
     EXPECT_EQ(scene.shapes[2].chamfer, 0.1);
-    const io::ValidatedScene v = io::validate(scene);
+    const dem::PreparedScene v = app::checkAndPrepareDem(scene);
     EXPECT_TRUE(v.warnings.empty());
     const auto& init = v.initial;
     const auto& ps = init.particles;
@@ -168,7 +169,7 @@ TEST(ShapeInput, ClockwisePolygonIsFixedWithAWarning) {
     const std::string text = std::string(kBase) +
                              "[[shape]]\nname = \"cw\"\nkind = \"polygon\"\ncorners = [[0.0, 0.0], [0.0, 0.1], [0.1, 0.1], [0.1, 0.0]]\n" +
                              particle("cw", 0.0, 0.0);
-    const io::ValidatedScene v = io::validate(io::readSceneText(text, "s.toml"));
+    const dem::PreparedScene v = app::checkAndPrepareDem(io::readSceneText(text, "s.toml"));
     ASSERT_EQ(v.warnings.size(), 1u);
     EXPECT_HAS(v.warnings[0], lineOf(text, "[[shape]]") + ": shape[1].corners");
     EXPECT_HAS(v.warnings[0], "listed clockwise; reversed to counter-clockwise");
@@ -276,12 +277,12 @@ TEST(ShapeInput, PolygonStartOverlapsAreExact) {
 
 TEST(ShapeInput, OverlapGeometryHelpers) {
     const std::vector<Vec2> sq = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-    EXPECT_NEAR(io::diskPolygonOverlap({0.5, 0.5}, 0.1, sq), 0.6, 1e-15);  // inside: r + distance to the boundary
-    EXPECT_NEAR(io::diskPolygonOverlap({0.5, -0.05}, 0.1, sq), 0.05, 1e-15);
-    EXPECT_LT(io::diskPolygonOverlap({1.1, 1.1}, 0.1, sq), 0);  // the corner is 0.141 away
-    EXPECT_TRUE(io::segmentEntersPolygon({-1, 0.5}, {2, 0.5}, sq));
-    EXPECT_TRUE(io::segmentEntersPolygon({0.4, 0.4}, {0.6, 0.6}, sq));  // inside
-    EXPECT_FALSE(io::segmentEntersPolygon({-1, 0}, {2, 0}, sq));        // along an edge: touching
-    EXPECT_FALSE(io::segmentEntersPolygon({-1, 1}, {1, -1}, sq));       // through a corner only
-    EXPECT_FALSE(io::segmentEntersPolygon({-1, -0.1}, {2, -0.1}, sq));
+    EXPECT_NEAR(geom::diskPolygonOverlap({0.5, 0.5}, 0.1, sq), 0.6, 1e-15);  // inside: r + distance to the boundary
+    EXPECT_NEAR(geom::diskPolygonOverlap({0.5, -0.05}, 0.1, sq), 0.05, 1e-15);
+    EXPECT_LT(geom::diskPolygonOverlap({1.1, 1.1}, 0.1, sq), 0);  // the corner is 0.141 away
+    EXPECT_TRUE(geom::segmentEntersPolygon({-1, 0.5}, {2, 0.5}, sq));
+    EXPECT_TRUE(geom::segmentEntersPolygon({0.4, 0.4}, {0.6, 0.6}, sq));  // inside
+    EXPECT_FALSE(geom::segmentEntersPolygon({-1, 0}, {2, 0}, sq));        // along an edge: touching
+    EXPECT_FALSE(geom::segmentEntersPolygon({-1, 1}, {1, -1}, sq));       // through a corner only
+    EXPECT_FALSE(geom::segmentEntersPolygon({-1, -0.1}, {2, -0.1}, sq));
 }

@@ -9,11 +9,12 @@
 #include <set>
 
 #include "geom/polygon.hpp"
-#include "model/generate.hpp"
+#include "dem/generate.hpp"
 #include "model/grain_shapes.hpp"
 
 using namespace granulab;
 using namespace granulab::model;
+using namespace granulab::dem;
 
 namespace {
 ShapeDef grainDef(const std::string& angles, const std::string& sizeMode, const std::string& countMode) {

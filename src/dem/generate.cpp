@@ -4,7 +4,7 @@
 // CounterRng(seed, stream): block positions, radii and temperatures from stream 1000 + block
 // index, polygon shapes and rotations from the separate shape streams below, so adding polygon
 // grains never changes the draws of disk scenes.
-#include "model/generate.hpp"
+#include "dem/generate.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -16,26 +16,20 @@
 #include "core/rng.hpp"
 #include "geom/polygon.hpp"
 #include "model/grain_shapes.hpp"
+#include "model/size_bounds.hpp"
 
-namespace granulab::model {
+namespace granulab::dem {
 
-Real minRadius(const SizeDistDef& d) noexcept {
-    switch (d.kind) {
-        case SizeDistDef::Kind::Constant: return d.value;
-        case SizeDistDef::Kind::Uniform:
-        case SizeDistDef::Kind::Gaussian: return d.min;
-    }
-    return d.value;
-}
-
-Real maxRadius(const SizeDistDef& d) noexcept {
-    switch (d.kind) {
-        case SizeDistDef::Kind::Constant: return d.value;
-        case SizeDistDef::Kind::Uniform:
-        case SizeDistDef::Kind::Gaussian: return d.max;
-    }
-    return d.value;
-}
+using model::BlockDef;
+using model::kDiskShape;
+using model::maxRadius;
+using model::minRadius;
+using model::SceneDef;
+using model::Grain;
+using model::ParticleDef;
+using model::ShapeDef;
+using model::ShapePool;
+using model::SizeDistDef;
 
 namespace {
 
@@ -344,10 +338,8 @@ InitialParticles generateParticles(const SceneDef& scene, const std::vector<std:
                 ip.shape = made[k].shape;
                 ip.angle = made[k].angle;
                 ip.position += rotated(made[k].offset, ip.angle);
-                masses.push_back(densityOf(mat) * out.shapes.area[ip.shape]);
-            } else {
-                masses.push_back(particleMass(massModelOf(scene.dem.massModel), densityOf(mat), radii[k]));
             }
+            masses.push_back(initialMass(out, ip, model::massModelOf(scene.dem.massModel), densityOf(mat)));
             out.particles.push_back(ip);
         }
         thermalVelocities(out.particles, first, b.temperature, masses, rng);
@@ -355,4 +347,4 @@ InitialParticles generateParticles(const SceneDef& scene, const std::vector<std:
     return out;
 }
 
-}  // namespace granulab::model
+}  // namespace granulab::dem

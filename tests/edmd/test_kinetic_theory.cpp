@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "analysis/kinetic_theory.hpp"
+#include "edmd/kinetic_theory.hpp"
 
 using namespace granulab;
-using namespace granulab::analysis;
+using namespace granulab::edmd;
 
 namespace {
 

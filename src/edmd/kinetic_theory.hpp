@@ -13,7 +13,7 @@
 
 #include "core/types.hpp"
 
-namespace granulab::analysis {
+namespace granulab::edmd {
 
 // ---- geometry (edmd 4.1, A.12) -------------------------------------------------------------
 
@@ -206,4 +206,4 @@ ReferenceThresholds referenceThresholds(const ReferenceSetup& setup);
 /// (Eqs. 5.2-5.3 in unscaled t). Numbers in %.10g. Same preconditions as referenceThresholds.
 std::string referenceCurvesCsv(const ReferenceSetup& setup, std::span<const Real> tau);
 
-}  // namespace granulab::analysis
+}  // namespace granulab::edmd

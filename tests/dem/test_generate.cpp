@@ -5,10 +5,11 @@
 
 #include <cmath>
 
-#include "model/generate.hpp"
+#include "dem/generate.hpp"
 
 using namespace granulab;
 using namespace granulab::model;
+using namespace granulab::dem;
 
 namespace {
 SceneDef sceneWith(const BlockDef& b) {

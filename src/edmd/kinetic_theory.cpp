@@ -5,7 +5,7 @@
 // gives the general form (f_E, l_E, EOS, lambda_cl, lambda_sh, M1(0)) so that the 2D and 3D
 // special cases printed in the spec are checks, not inputs. The only numerical method is the
 // Riemann zeta function for Eq. 5.48 (Euler-Maclaurin with 8 Bernoulli terms after 16 summands).
-#include "analysis/kinetic_theory.hpp"
+#include "edmd/kinetic_theory.hpp"
 
 #include <fmt/format.h>
 
@@ -14,7 +14,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace granulab::analysis {
+namespace granulab::edmd {
 
 namespace {
 
@@ -356,4 +356,4 @@ std::string referenceCurvesCsv(const ReferenceSetup& s, std::span<const Real> ta
     return out;
 }
 
-}  // namespace granulab::analysis
+}  // namespace granulab::edmd

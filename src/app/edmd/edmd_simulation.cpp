@@ -1,0 +1,497 @@
+// SPDX-License-Identifier: MIT
+// The edmd engine behind the Simulation seam (app/simulation.hpp; edmd spec sections 2, 4.2,
+// 5.2; checklist items 16-30): initial state and elastic pre-run, the event loop stopped at
+// output times or collision counts (the engine extrapolates, the schedule is untouched),
+// series.csv with the gas measurements, VTK snapshots, analysis files, kinetic-theory reference
+// curves, the engine state for checkpoints. Engine<D, Queue> is chosen once, here.
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fmt/format.h>
+#include <limits>
+#include <optional>
+
+#include "analysis/gas_clusters.hpp"
+#include "analysis/gas_structure.hpp"
+#include "analysis/gas_velocity.hpp"
+#include "app/edmd/edmd_engine.hpp"
+#include "app/simulation_options.hpp"
+#include "core/binary_io.hpp"
+#include "core/timer.hpp"
+#include "core/version.hpp"
+#include "edmd/kinetic_theory.hpp"
+#include "io/atomic_file.hpp"
+#include "io/final_csv.hpp"
+#include "io/gas_analysis_files.hpp"
+#include "io/validate_edmd.hpp"
+
+namespace granulab::app {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+/// Values at the previous series row, for interval averages (collision frequency, pressure);
+/// part of the checkpoint.
+struct SeriesMemory {
+    Real lastTime = 0;
+    std::uint64_t lastCollisions = 0;
+    Real lastVirial = 0;
+    Real lastKinetic = 0;
+    Real lastVolumeFraction = -1;  ///< at the previous row (growing spheres), -1 before the first row
+    Real equilibrationWall = 0;    ///< [s] wall time of the elastic pre-run
+};
+
+/// The snapshot and the measurements that series rows and snapshots share, made once per stop.
+struct Measurement {
+    std::uint64_t events = 0;  ///< engine state it was made at (events, time)
+    Real time = -1;
+    analysis::PointSet points;
+    analysis::DensityDistribution density;
+    std::optional<analysis::ClusterStats> clusters;
+};
+
+template <int D, class Queue>
+class EdmdSimulation final : public Simulation {
+public:
+    using Engine = edmd::Engine<D, Queue>;
+
+    EdmdSimulation(const model::SceneDef& scene, edmd::Setup setup, const SimulationOptions& options)
+        : m_scene(scene), m_setup(std::move(setup)), m_options(options), m_engine(makeEngine()) {}
+
+    std::string engine() const override { return "edmd"; }
+    double time() const override { return m_engine.time(); }
+    std::uint64_t count() const override { return m_engine.stats().collisions; }
+    std::uint64_t progressCounter() const override { return m_engine.stats().events; }
+    std::string progressUnit() const override { return "events"; }
+    std::size_t particles() const override { return m_engine.size(); }
+    std::size_t memoryBytes() const override { return m_engine.memoryBytes(); }
+    std::vector<std::string> warnings() const override { return m_setup.warnings; }
+
+    RunPlan plan() const override {
+        using U = Schedule::Unit;
+        const auto& E = m_scene.edmd;
+        const auto& out = m_scene.output;
+        const Real endTime = m_setup.endTime;
+        RunPlan p;
+        p.snapshots = Schedule::periodic(U::Time, out.snapshotInterval);
+        p.progress = Schedule::never();
+        p.benchmark = Schedule::never();
+        if (m_setup.endCollisions == 0) {
+            p.end = {U::Time, true, [endTime](std::int64_t k) { return k == 1 ? endTime : kInf; }, 0};
+            p.series = {U::Time, true, [this, endTime](std::int64_t k) { return std::min(rowTime(k), endTime); }, 0};
+            p.checkpoints = Schedule::periodic(U::Time, out.checkpointInterval > 0 ? out.checkpointInterval : endTime / 10);
+            p.progressEnd = endTime;
+            return p;
+        }
+        // Collision-count runs: rows at equal collision steps; time schedules fire at the first row after.
+        const std::uint64_t endC = m_setup.endCollisions, points = static_cast<std::uint64_t>(E.seriesPoints);
+        const auto rowTarget = [endC, points](std::int64_t k) {
+            return static_cast<double>(std::min<std::uint64_t>(endC, static_cast<std::uint64_t>(k) * endC / points));
+        };
+        p.end = {U::Count, true, [endC](std::int64_t k) { return k == 1 ? static_cast<double>(endC) : kInf; }, 0};
+        p.series = {U::Count, true, rowTarget, 0};
+        p.snapshots.exact = false;
+        if (out.checkpointInterval > 0) {
+            p.checkpoints = Schedule::periodic(U::Time, out.checkpointInterval, false);
+        } else {  // a checkpoint every tenth of the rows
+            const std::int64_t every = std::max<std::int64_t>(1, E.seriesPoints / 10);
+            p.checkpoints = {U::Count, true, [rowTarget, every](std::int64_t k) { return rowTarget(k * every); }, 0};
+        }
+        p.progressEnd = static_cast<double>(endC);
+        p.progressByCount = true;
+        return p;
+    }
+
+    void start() override {
+        if (m_setup.equilibrationCollisions > 0) {
+            if (!m_options.quiet)
+                fmt::print(stderr, "equilibrating: elastic pre-run of {} collisions per particle ...\n",
+                           m_scene.edmd.equilibrate);
+            const double t0 = wallSeconds();
+            m_engine.runCollisions(m_setup.equilibrationCollisions);
+            m_memory.equilibrationWall = wallSeconds() - t0;
+        }
+        m_engine.restartClock();
+        m_engine.setCollisionRules(m_setup.config.restitution, m_setup.config.wallRestitution, m_setup.config.tc);
+        m_memory.lastKinetic = m_engine.kineticEnergy();
+    }
+
+    void beginLoop() override {
+        m_eventsAtStart = m_engine.stats().events;
+        m_collisionsAtStart = m_engine.stats().collisions;
+        if (std::isfinite(m_setup.endTime) && m_scene.edmd.series == "log" && m_scene.output.seriesInterval == 0 &&
+            rowTime(1) >= m_setup.endTime)
+            fmt::print(stderr, "note: edmd.series_first is not before the end; series.csv has one row at the end\n");
+    }
+
+    std::uint32_t advance(const Stop& stop) override {
+        if (stop.count != std::numeric_limits<std::uint64_t>::max()) {
+            const std::uint64_t now = m_engine.stats().collisions;
+            m_engine.runCollisions(stop.count > now ? stop.count - now : 0);
+        } else {
+            m_engine.runUntil(stop.time);
+        }
+        return kSimOk;
+    }
+
+    std::string diagnose(std::uint32_t) const override { return "the edmd run stopped"; }
+
+    std::vector<std::string> seriesColumns() const override {
+        std::vector<std::string> c = {"time", "tau", "events", "collisions", "collisions_per_particle", "wall_collisions",
+                                      "kinetic_energy", "rotational_energy", "potential_energy", "total_energy",
+                                      "dissipated_energy", "volume_fraction", "energy_per_particle", "temperature",
+                                      "temperature_haff", "collision_frequency", "mean_free_path", "pressure",
+                                      "reduced_pressure", "tc_elastic_fraction", "kurtosis"};
+        for (int d = 0; d < D; ++d) c.push_back(std::string("kurtosis_") + "xyz"[d]);
+        for (const char* q : {"nu_q01", "nu_q10", "nu_q25", "nu_q50", "nu_q75", "nu_q90", "nu_q99"}) c.push_back(q);
+        if (m_scene.edmd.clusters)
+            for (const char* k : {"clusters", "M1", "M2", "M1_reduced", "M2_reduced", "largest_cluster", "q_x"})
+                c.push_back(k);
+        return c;
+    }
+
+    std::vector<double> seriesRow() override;
+
+    void snapshot(const std::string& dir, int index, io::PvdWriter& pvd) override;
+
+    void writeFinal(const std::string& dir) override;
+
+    nlohmann::json summaryKeys(const RunReport& report) const override;
+
+    std::string banner(const std::string& dir) const override {
+        const auto& E = m_scene.edmd;
+        std::string s = fmt::format(
+            "granulab {}: edmd {}D, {} {}, volume fraction {:.4f}, eps {}, t_E = {:.4g} s, TC t_c = {:.3g} s, ", kVersion,
+            D, m_engine.size(), D == 2 ? "disks" : "spheres", m_setup.volumeFraction, E.restitution, m_setup.tE,
+            m_setup.config.tc);
+        if (m_setup.endCollisions > 0) return s + fmt::format("{} collisions -> {}", m_setup.endCollisions, dir);
+        return s + fmt::format("to t = {:.6g} s{} -> {}", m_setup.endTime,
+                               E.endTau > 0 ? fmt::format(" (tau = {:.4g})", E.endTau) : std::string(), dir);
+    }
+
+    void printDone(const std::string& dir, const RunReport& report) const override {
+        const auto& st = m_engine.stats();
+        const double engineSeconds = std::max(1e-9, report.loopSeconds - report.outputSeconds);
+        const double collisions = static_cast<double>(st.collisions - m_collisionsAtStart);
+        const double events = static_cast<double>(st.events - m_eventsAtStart);
+        fmt::print(stderr, "done: {} collisions, {} events in {:.3g} s ({:.3g} collisions/s, {:.3g} events/s)\n",
+                   collisions, events, engineSeconds, collisions / engineSeconds, events / engineSeconds);
+        fmt::print("results in {}/ : summary.json, series.csv, final.csv{}{}, checkpoint.bin{}\n", dir,
+                   m_scene.output.vtk ? ", snapshots.pvd" : "", m_scene.edmd.analysisFiles ? ", analysis/" : "",
+                   m_theory.is_null() ? "" : ", theory.csv");
+        if (m_scene.output.vtk)
+            fmt::print("view in ParaView: paraview {}/snapshots.pvd  (Glyph filter, type Sphere, scale array 'radius', "
+                       "factor 2; colour by 'collisions')\n",
+                       dir);
+        fmt::print("measure the final state: granulab analyze {}\n", dir);
+    }
+
+    io::SceneIdentity identity() const override {
+        return {{"edmd.queue", m_scene.edmd.queue},
+                {"dimension", std::to_string(D)},
+                {"particles", std::to_string(m_engine.size())}};
+    }
+    void saveState(std::ostream& out) const override {
+        writePod(out, m_memory);
+        m_engine.saveState(out);
+    }
+    void loadState(std::istream& in) override {
+        m_memory = readPod<SeriesMemory>(in);
+        m_engine.loadState(in);
+    }
+
+private:
+    Engine makeEngine() {
+        auto state = edmd::makeGasState<D>(m_scene, m_setup);
+        const auto n = static_cast<Real>(state.x.size());
+        m_totalVolume = 1;
+        for (int d = 0; d < D; ++d) m_totalVolume *= m_setup.config.box[d];
+        m_meanMass = 0;
+        for (const Real m : state.mass) m_meanMass += m / n;
+        // The elastic pre-run (spec 4.2 step 3) uses the same box, walls and gravity, eps = 1, no TC.
+        edmd::EngineConfig elastic = m_setup.config;
+        elastic.restitution = {};
+        elastic.wallRestitution = 1;
+        return Engine(elastic, std::move(state.x), std::move(state.v), std::move(state.radius), std::move(state.mass));
+    }
+
+    /// Time of series row `row` (row 0 is t = 0): series_interval, or linear/log over the run.
+    Real rowTime(std::int64_t row) const {
+        const Real end = m_setup.endTime;
+        const auto points = m_scene.edmd.seriesPoints;
+        if (!std::isfinite(end)) return kInf;  // collision-count rows
+        if (m_scene.output.seriesInterval > 0) return std::min(end, m_scene.output.seriesInterval * static_cast<Real>(row));
+        if (m_scene.edmd.series == "log") {
+            const Real first = m_scene.edmd.seriesFirst > 0 ? m_scene.edmd.seriesFirst : m_setup.tE / 100;
+            if (first >= end) return end;
+            return first * std::pow(end / first, static_cast<Real>(row - 1) / static_cast<Real>(points - 1));
+        }
+        return end * static_cast<Real>(row) / static_cast<Real>(points);
+    }
+
+    analysis::PointSet snapshotPoints() const;
+    /// The measurement at the current state, made once (cached until the engine moves on).
+    Measurement& measure(bool clusters);
+
+    const model::SceneDef& m_scene;
+    edmd::Setup m_setup;
+    SimulationOptions m_options;
+    Real m_totalVolume = 1;
+    Real m_meanMass = 1;
+    Engine m_engine;
+    SeriesMemory m_memory;
+    Measurement m_measurement;
+    nlohmann::json m_lastRow;
+    nlohmann::json m_theory;
+    std::uint64_t m_eventsAtStart = 0, m_collisionsAtStart = 0;
+};
+
+template <int D, class Queue>
+analysis::PointSet EdmdSimulation<D, Queue>::snapshotPoints() const {
+    analysis::PointSet p;
+    p.dim = D;
+    p.box = m_setup.config.box;
+    p.periodic = m_setup.config.periodic;
+    const std::uint32_t n = m_engine.size();
+    p.x.resize(static_cast<std::size_t>(D) * n);
+    p.v.resize(static_cast<std::size_t>(D) * n);
+    p.radius.resize(n);
+    p.mass.resize(n);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        const auto x = m_engine.positionNow(i);
+        const auto v = m_engine.velocityNow(i);
+        for (int d = 0; d < D; ++d) {
+            // Inside [0, box) for the analyses (a wall contact sits exactly at the edge).
+            p.x[static_cast<std::size_t>(D) * i + d] = std::clamp(x[d], Real(0), std::nextafter(p.box[d], Real(0)));
+            p.v[static_cast<std::size_t>(D) * i + d] = v[d];
+        }
+        p.radius[i] = m_engine.radius(i);
+        p.mass[i] = m_engine.mass(i);
+    }
+    return p;
+}
+
+template <int D, class Queue>
+Measurement& EdmdSimulation<D, Queue>::measure(bool clusters) {
+    Measurement& m = m_measurement;
+    if (m.events != m_engine.stats().events || m.time != m_engine.time()) {
+        m = Measurement{};
+        m.events = m_engine.stats().events;
+        m.time = m_engine.time();
+        m.points = snapshotPoints();
+        m.density = analysis::densityDistribution(m.points);
+    }
+    if (clusters && !m.clusters)
+        m.clusters = analysis::computeClusterStats(
+            analysis::findClusters(m.points, m_scene.edmd.clusterDelta).sizes, m_engine.size());
+    return m;
+}
+
+template <int D, class Queue>
+std::vector<double> EdmdSimulation<D, Queue>::seriesRow() {
+    const Measurement& m = measure(m_scene.edmd.clusters);
+    const auto& points = m.points;
+    const auto vel = analysis::velocityStats(points);
+    const Real n = static_cast<Real>(m_engine.size());
+    const Real t = m_engine.time();
+    const Real kinetic = m_engine.kineticEnergy();
+    const auto& st = m_engine.stats();
+    auto& book = m_memory;
+    const Real dt = t - book.lastTime;
+    const Real dC = static_cast<Real>(st.collisions - book.lastCollisions);
+    const Real frequency = dt > 0 ? 2 * dC / (n * dt) : std::numeric_limits<Real>::quiet_NaN();  // f_E = 2 dC/(N dt), spec 5.2
+    // Collisional virial (spec 7 item 27): P = (2 <E_kin> + sum r.J / dt) / (D V) over the interval.
+    const Real meanKinetic = 0.5 * (kinetic + book.lastKinetic);
+    const Real pressure = dt > 0 ? (2 * meanKinetic + (m_engine.collisionalVirial() - book.lastVirial) / dt) / (D * m_totalVolume)
+                                 : std::numeric_limits<Real>::quiet_NaN();
+    const Real meanT = 2 * meanKinetic / (D * n);
+    const Real reduced = pressure * m_totalVolume / (n * meanT) - 1;
+    // Mean free path from the measured E and f_E, thesis mean-speed convention (Eq. 5.9 with the
+    // audit fix sqrt(2E/(D m)) = sqrt(T/m)).
+    const Real meanSpeed = std::sqrt(std::pow(2.0, D) / kPi) * std::sqrt(vel.temperature / m_meanMass);
+    const Real tau = m_setup.lambda > 0 ? m_setup.lambda * t / (2 * D * m_setup.tE) : 0;
+    const Real tHaff = m_setup.lambda > 0 ? m_scene.edmd.temperature / ((1 + tau) * (1 + tau)) : m_scene.edmd.temperature;
+    // Volume fraction with the current radii (growing spheres change it), averaged over the row
+    // interval like the pressure, so that an equation of state can be read off one row.
+    Real particleVolume = 0;
+    for (const Real r : points.radius) particleVolume += edmd::ballVolume(D, r);
+    const Real fractionNow = particleVolume / m_totalVolume;
+    const Real fraction = book.lastVolumeFraction >= 0 ? 0.5 * (fractionNow + book.lastVolumeFraction) : fractionNow;
+    std::vector<double> row = {t,
+                               tau,
+                               static_cast<double>(st.events),
+                               static_cast<double>(st.collisions),
+                               2 * static_cast<double>(st.collisions) / n,
+                               static_cast<double>(st.wallCollisions),
+                               kinetic,
+                               m_engine.rotationalEnergy(),
+                               m_engine.potentialEnergy(),
+                               kinetic + m_engine.rotationalEnergy() + m_engine.potentialEnergy(),
+                               m_engine.dissipatedEnergy(),
+                               fraction,
+                               vel.kineticEnergy,
+                               vel.temperature,
+                               tHaff,
+                               frequency,
+                               frequency > 0 ? meanSpeed / frequency : std::numeric_limits<Real>::quiet_NaN(),
+                               pressure,
+                               reduced,
+                               st.collisions ? static_cast<double>(st.tcElastic) / static_cast<double>(st.collisions) : 0.0,
+                               vel.pooled.kurtosis};
+    for (int d = 0; d < D; ++d) row.push_back(vel.axis[d].kurtosis);
+    for (const Real q : m.density.quantiles) row.push_back(q);
+    m_lastRow = {{"time", t}, {"tau", tau}, {"temperature", vel.temperature}, {"collision_frequency", frequency},
+                 {"reduced_pressure", reduced}, {"kurtosis", vel.pooled.kurtosis}};
+    if (m.clusters) {
+        const auto& cs = *m.clusters;
+        for (const double v : {static_cast<double>(cs.clusterCount), cs.moment[1], cs.moment[2], cs.reducedMoment[1],
+                               cs.reducedMoment[2], static_cast<double>(cs.largest), cs.largestFraction})
+            row.push_back(v);
+        m_lastRow["M1"] = cs.moment[1];
+        m_lastRow["q_x"] = cs.largestFraction;
+    }
+    book.lastTime = t;
+    book.lastCollisions = st.collisions;
+    book.lastVirial = m_engine.collisionalVirial();
+    book.lastKinetic = kinetic;
+    book.lastVolumeFraction = fractionNow;
+    return row;
+}
+
+template <int D, class Queue>
+void EdmdSimulation<D, Queue>::snapshot(const std::string& dir, int index, io::PvdWriter& pvd) {
+    Measurement& m = measure(false);
+    if (m_scene.output.vtk) {
+        std::vector<std::uint64_t> ids(m_engine.size());
+        std::vector<double> collisions(m_engine.size());
+        for (std::uint32_t i = 0; i < m_engine.size(); ++i) {
+            ids[i] = i;
+            collisions[i] = static_cast<double>(m_engine.collisions(i));
+        }
+        const std::string file = io::snapshotFileName("gas", index);
+        io::writeGasVtp(dir + "/" + file, m.points, ids, collisions, m_engine.time());
+        pvd.add(m_engine.time(), 0, file);
+        pvd.write();
+    }
+    if (!m_scene.edmd.analysisFiles) return;
+    // Analysis files (spec 5.2): g(r), p(v), local density distribution, cluster sizes.
+    measure(true);
+    io::GasAnalysisSettings settings;
+    settings.radius = m_setup.init.radius;
+    settings.clusterDelta = m_scene.edmd.clusterDelta;
+    io::writeGasAnalysisFiles(fmt::format("{}/analysis/{{}}_{:06d}.csv", dir, index), m.points, m.density, *m.clusters,
+                              settings, m_engine.time());
+}
+
+template <int D, class Queue>
+void EdmdSimulation<D, Queue>::writeFinal(const std::string& dir) {
+    // Hard spheres carry no orientation: the contract's angle column is absent (io/final_csv.hpp).
+    io::FinalCsvWriter out(dir + "/final.csv", {D, false, {"mass", "collisions"}});
+    for (std::uint32_t i = 0; i < m_engine.size(); ++i) {
+        const auto x = m_engine.positionNow(i);
+        const auto v = m_engine.velocityNow(i);
+        const auto w = m_engine.omega(i);
+        io::FinalCsvParticle p;
+        p.id = i;
+        p.shape = D == 2 ? "disk" : "sphere";
+        for (int d = 0; d < D; ++d) {
+            p.x[d] = x[d];
+            p.v[d] = v[d];
+        }
+        for (int d = 0; d < 3; ++d) p.omega[d] = w[d];
+        p.radius = m_engine.radius(i);
+        out.row(p);
+        out.extra(m_engine.mass(i));
+        out.extra(std::uint64_t{m_engine.collisions(i)});
+        out.endRow();
+    }
+    out.commit();
+    // Kinetic-theory reference curves (spec 7 item 31) for comparison plots.
+    const auto& E = m_scene.edmd;
+    if (!(m_setup.lambda > 0 && E.restitutionModel == "constant" && E.radiusMax <= E.radius)) return;
+    edmd::ReferenceSetup ref;
+    ref.dim = D;
+    ref.n = m_engine.size();
+    ref.nu = std::min(m_setup.volumeFraction, D == 2 ? 0.69 : 0.49);
+    ref.eps = E.restitution;
+    ref.m = E.mass;
+    ref.a = E.radius;
+    ref.T0 = E.temperature;
+    const auto th = edmd::referenceThresholds(ref);
+    std::vector<Real> taus;
+    const Real endTime = m_setup.endTime;
+    const Real tauEnd = std::isfinite(endTime) ? std::max(1.0, m_setup.lambda * endTime / (2 * D * m_setup.tE)) : 1e5;
+    for (Real tau = 1e-3; tau <= tauEnd * 1.0001; tau *= std::pow(10.0, 0.05)) taus.push_back(tau);
+    io::writeFileAtomically(dir + "/theory.csv", edmd::referenceCurvesCsv(ref, taus));
+    m_theory = {{"g_2a", th.g2a}, {"l_opt", th.lOpt}, {"lambda", th.lambda}, {"lambda_cl", th.lambdaCl},
+                {"lambda_sh", th.lambdaSh}, {"eps_ic", th.epsIc}, {"eps_cl", th.epsCl}, {"t_E", th.tE},
+                {"f_E0", th.fE0}, {"l_E", th.lE}, {"tau_hc", th.tauHc}, {"tau_cs", th.tauCs}, {"tau_p_fit", th.tauPFit}};
+}
+
+template <int D, class Queue>
+nlohmann::json EdmdSimulation<D, Queue>::summaryKeys(const RunReport& report) const {
+    const auto& E = m_scene.edmd;
+    const auto& st = m_engine.stats();
+    const double events = static_cast<double>(st.events - m_eventsAtStart);
+    const double collisions = static_cast<double>(st.collisions - m_collisionsAtStart);
+    const double engineSeconds = std::max(1e-9, report.loopSeconds - report.outputSeconds);
+    nlohmann::json js;
+    js["dimension"] = D;
+    js["volume_fraction"] = m_setup.volumeFraction;
+    js["box"] = std::vector<Real>(m_setup.config.box.begin(), m_setup.config.box.begin() + D);
+    js["periodic"] = std::vector<bool>(m_setup.config.periodic.begin(), m_setup.config.periodic.begin() + D);
+    js["radius"] = E.radius;
+    js["queue"] = E.queue;
+    const auto cells = m_engine.cellsPerAxis();
+    js["cells_per_axis"] = std::vector<int>(cells.begin(), cells.begin() + D);
+    js["t_E"] = m_setup.tE;
+    js["tau"] = m_setup.lambda > 0 ? m_setup.lambda * m_engine.time() / (2 * D * m_setup.tE) : 0.0;
+    js["tc"] = m_setup.config.tc;
+    js["resumed"] = report.resumed;
+    js["events"] = st.events;
+    js["collisions"] = st.collisions;
+    js["annulled"] = st.annulled;
+    js["cell_crossings"] = st.cellCrossings;
+    js["wall_collisions"] = st.wallCollisions;
+    js["tc_elastic"] = st.tcElastic;
+    js["regrids"] = st.regrids;
+    js["equilibration_time_s"] = m_memory.equilibrationWall;
+    js["output_time_s"] = report.outputSeconds;
+    // Throughput of the event loop alone (outputs and measurements excluded), this session.
+    js["events_per_s"] = events / engineSeconds;
+    js["collisions_per_s"] = collisions / engineSeconds;
+    js["energy"] = {{"kinetic", m_engine.kineticEnergy()}, {"rotational", m_engine.rotationalEnergy()},
+                    {"potential", m_engine.potentialEnergy()}, {"dissipated", m_engine.dissipatedEnergy()}};
+    const auto p = m_engine.momentum();
+    js["momentum"] = std::vector<Real>(p.c, p.c + D);
+    js["last_row"] = m_lastRow;
+    if (!m_theory.is_null()) js["theory"] = m_theory;
+    return js;
+}
+
+template <int D>
+std::unique_ptr<Simulation> withQueue(const model::SceneDef& scene, edmd::Setup setup, const SimulationOptions& options) {
+    const std::string& queue = scene.edmd.queue;
+    if (queue == "heap") return std::make_unique<EdmdSimulation<D, edmd::AddressableHeap>>(scene, std::move(setup), options);
+    if (queue == "tree") return std::make_unique<EdmdSimulation<D, edmd::TournamentTree>>(scene, std::move(setup), options);
+    return std::make_unique<EdmdSimulation<D, edmd::CalendarQueue>>(scene, std::move(setup), options);
+}
+
+}  // namespace
+
+edmd::Setup checkAndResolveEdmd(const model::SceneDef& scene) {
+    Diagnostics diags;
+    io::checkEdmdDef(scene, diags);
+    diags.throwIfAny();
+    return edmd::resolveScene(scene);
+}
+
+std::unique_ptr<Simulation> makeEdmdSimulation(const model::SceneDef& scene, const SimulationOptions& options) {
+    edmd::Setup setup = checkAndResolveEdmd(scene);
+    return setup.dim == 2 ? withQueue<2>(scene, std::move(setup), options) : withQueue<3>(scene, std::move(setup), options);
+}
+
+}  // namespace granulab::app

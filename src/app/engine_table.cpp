@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: MIT
+// The engine table (app/engine_table.hpp). To add an engine: write its adapter (a Simulation,
+// app/<engine>/), its scene section reader (io/<engine>_sections) and add one row here.
+#include "app/engine_table.hpp"
+
+#include <fmt/format.h>
+
+#include "app/dem/dem_engine.hpp"
+#include "app/edmd/edmd_engine.hpp"
+#include "core/error.hpp"
+
+namespace granulab::app {
+
+const std::vector<EngineEntry>& engineTable() {
+    static const std::vector<EngineEntry> table = {
+        {"dem", "time-driven soft-particle DEM in 2D: disks and convex polygons (gc2d, cfddem)", makeDemSimulation,
+         demInfo, nullptr, "stress, density and repose analyses of dem runs come with a later version"},
+        {"edmd", "event-driven MD of inelastic hard disks and spheres (edmd)", makeEdmdSimulation, edmdInfo,
+         edmdAnalyze, ""},
+    };
+    return table;
+}
+
+const EngineEntry* findEngine(const std::string& name) {
+    for (const auto& e : engineTable())
+        if (e.name == name) return &e;
+    return nullptr;
+}
+
+std::string engineNamesText() {
+    std::string s;
+    for (const auto& e : engineTable()) s += (s.empty() ? "" : ", ") + e.name;
+    return s;
+}
+
+const EngineEntry& engineOf(const model::SceneDef& scene) {
+    if (const EngineEntry* e = findEngine(scene.run.engine)) return *e;
+    throw SceneError(makeDiagnostic(scene.run.loc.file, scene.run.loc.line, "run.engine",
+                                    fmt::format("unknown engine '{}'; allowed: {}", scene.run.engine, engineNamesText())));
+}
+
+model::SceneDef readScene(const std::string& path, const std::vector<io::Override>& overrides) {
+    return io::readScene(path, overrides);
+}
+
+}  // namespace granulab::app

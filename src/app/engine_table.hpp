@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: MIT
+// The engine table: the only place that names engines (docs/architecture.md "Adding an
+// engine"). `granulab run`, `info` and `analyze` look an engine up here by run.engine (or by the
+// engine recorded in summary.json) and call its row; nothing else compares engine names.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "app/analyze.hpp"
+#include "app/simulation.hpp"
+#include "app/simulation_options.hpp"
+#include "io/scene_reader.hpp"
+#include "model/scene_def.hpp"
+
+namespace granulab::app {
+
+struct EngineEntry {
+    std::string name;         ///< value of run.engine
+    std::string description;  ///< one line for help texts
+    /// Checks the scene (every problem at once, SceneError) and builds the engine's adapter.
+    std::unique_ptr<Simulation> (*build)(const model::SceneDef& scene, const SimulationOptions& options);
+    /// `granulab info SCENE`: prints what the scene contains; returns the exit status.
+    int (*info)(const std::string& scenePath, const model::SceneDef& scene);
+    /// `granulab analyze DIR` of a finished run (nullptr: no analyses yet, see analyzeLater).
+    int (*analyze)(const AnalyzeOptions& options, const nlohmann::json& summary);
+    std::string analyzeLater;  ///< what to tell a user whose engine has no analyses yet
+};
+
+const std::vector<EngineEntry>& engineTable();
+
+/// The row of `name`; nullptr if no engine has that name.
+const EngineEntry* findEngine(const std::string& name);
+
+/// The row of the scene's run.engine; SceneError at run.engine listing the engines otherwise.
+const EngineEntry& engineOf(const model::SceneDef& scene);
+
+/// "dem, edmd" (for messages).
+std::string engineNamesText();
+
+/// Reads a scene file with every engine's sections; SceneError lists every problem.
+model::SceneDef readScene(const std::string& path, const std::vector<io::Override>& overrides);
+
+}  // namespace granulab::app

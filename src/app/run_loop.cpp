@@ -1,0 +1,156 @@
+// SPDX-License-Identifier: MIT
+// The run loop (app/run_loop.hpp). A stop is the earliest point of every exact schedule; at a
+// stop each due output fires once, in the order series row, snapshot, checkpoint (series.csv is
+// flushed before a checkpoint, so a resumed run finds every row up to it). The end of the run
+// fires all three. Polled schedules fire at the first stop at or after their point.
+#include "app/run_loop.hpp"
+
+#include <filesystem>
+#include <fmt/format.h>
+
+#include "app/exit_codes.hpp"
+#include "app/progress.hpp"
+#include "app/trigger.hpp"
+#include "core/error.hpp"
+#include "core/timer.hpp"
+#include "io/csv_writers.hpp"
+#include "io/summary.hpp"
+
+namespace granulab::app {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string checkpointLine(double time, const std::string& where) {
+    return fmt::format("The last good checkpoint (t = {:.6g} s) is kept in {}/checkpoint.bin.", time, where);
+}
+
+io::CheckpointHeader headerOf(const Simulation& sim, std::int64_t nextSnapshot) {
+    return {sim.engine(), sim.identity(), {nextSnapshot}};
+}
+
+}  // namespace
+
+int runSimulation(Simulation& sim, const model::SceneDef& scene, const RunContext& ctx) {
+    const RunPlan plan = sim.plan();
+    Trigger end(plan.end), series(plan.series), snapshots(plan.snapshots), checkpoints(plan.checkpoints),
+        progressTick(plan.progress), benchmark(plan.benchmark);
+    const bool resumed = !ctx.resumeDir.empty();
+    io::RunBookkeeping book;
+    std::string lastCheckpoint = "No checkpoint was written before the failure (see output.checkpoint_interval).";
+    if (resumed) {
+        try {
+            book = io::readCheckpoint(ctx.resumeDir, headerOf(sim, 0), [&](std::istream& in) { sim.loadState(in); });
+        } catch (const std::runtime_error& e) {  // a missing or foreign checkpoint is bad input
+            throw SceneError(makeDiagnostic(ctx.resumeDir, 0, "--resume", e.what()));
+        }
+        lastCheckpoint = checkpointLine(sim.time(), ctx.resumeDir);
+    } else {
+        sim.start();
+    }
+    for (Trigger* t : {&end, &series, &snapshots, &checkpoints, &progressTick, &benchmark}) t->seek(sim.time(), sim.count());
+    if (resumed && !(end.next() < std::numeric_limits<double>::infinity()))
+        throw SceneError(makeDiagnostic(scene.run.loc.file, scene.run.loc.line, "run.end_time",
+                                        fmt::format("the checkpoint in {} is at t = {:.6g} s, where this scene's run ends already; "
+                                                    "to continue, set a later end (run.end_time, got {:.6g} s)",
+                                                    ctx.resumeDir, sim.time(), scene.run.endTime)));
+
+    io::SeriesWriter seriesFile(ctx.dir + "/series.csv", sim.seriesColumns(), resumed ? sim.time() : -1.0);
+    io::PvdWriter pvd(ctx.dir + "/snapshots.pvd");
+    if (resumed && fs::exists(ctx.dir + "/snapshots.pvd")) {
+        pvd.load();
+        pvd.truncateAfter(sim.time());
+    }
+    const auto writeSnapshot = [&] {
+        sim.snapshot(ctx.dir, static_cast<int>(book.nextSnapshot++), pvd);
+        seriesFile.flush();
+    };
+    if (!resumed) {
+        seriesFile.row(sim.seriesRow());
+        writeSnapshot();
+    }
+    const std::size_t warningsBefore = sim.warnings().size();
+    if (!ctx.quiet) fmt::print(stderr, "{}\n", sim.banner(ctx.dir));
+
+    const auto position = [&] { return plan.progressByCount ? static_cast<double>(sim.count()) : sim.time(); };
+    Progress progress(plan.progressEnd, ctx.quiet, sim.progressUnit(), plan.progressByCount);
+    RunReport report;
+    report.resumed = resumed;
+    sim.beginLoop();
+    const double loopStart = wallSeconds();
+    double benchmarkStart = -1;
+    std::uint64_t benchmarkCount = 0;
+    if (plan.benchmark.point && plan.benchmark.point(1) == static_cast<double>(sim.count())) {
+        benchmarkStart = loopStart;  // the timed segment starts where the loop does
+        benchmarkCount = sim.count();
+    }
+    std::uint32_t status = kSimOk;
+    for (;;) {
+        Stop stop;
+        for (const Trigger* t : {&end, &series, &snapshots, &checkpoints, &progressTick, &benchmark}) t->limit(stop);
+        status = sim.advance(stop);
+        if (status != kSimOk) break;
+        const double t = sim.time();
+        const std::uint64_t c = sim.count();
+        if (benchmark.reached(t, c) && benchmarkStart < 0) {
+            benchmarkStart = wallSeconds();
+            benchmarkCount = c;
+        }
+        const bool finished = end.reached(t, c);
+        const bool doSeries = finished || series.reached(t, c);
+        const bool doSnapshot = finished || snapshots.reached(t, c);
+        const bool doCheckpoint = finished || checkpoints.reached(t, c);
+        if (doSeries || doSnapshot || doCheckpoint) {
+            const double t0 = wallSeconds();
+            if (doSeries) {
+                seriesFile.row(sim.seriesRow());
+                status = sim.health();
+                if (status != kSimOk) break;
+            }
+            if (doSnapshot) writeSnapshot();
+            if (doCheckpoint) {
+                seriesFile.flush();
+                io::writeCheckpoint(ctx.dir, headerOf(sim, book.nextSnapshot), [&](std::ostream& out) { sim.saveState(out); });
+                lastCheckpoint = checkpointLine(t, ctx.dir);
+            }
+            report.outputSeconds += wallSeconds() - t0;
+        }
+        for (Trigger* tr : {&series, &snapshots, &checkpoints, &progressTick, &benchmark}) tr->pass(t, c);
+        progress.update(position(), static_cast<std::int64_t>(sim.progressCounter()));
+        if (finished) break;
+    }
+    const double loopEnd = wallSeconds();
+    progress.finish(position(), static_cast<std::int64_t>(sim.progressCounter()));
+    report.loopSeconds = loopEnd - loopStart;
+    if (benchmarkStart >= 0) {
+        report.benchmarkSeconds = loopEnd - benchmarkStart;
+        report.benchmarkCount = sim.count() - benchmarkCount;
+    }
+
+    const bool ok = status == kSimOk;
+    const auto warnings = sim.warnings();
+    for (std::size_t k = warningsBefore; k < warnings.size(); ++k)
+        fmt::print(stderr, "warning: {}\n", warnings[k]);  // shown even with --quiet
+    if (ok) sim.writeFinal(ctx.dir);
+    io::SummaryCommon common;
+    common.engine = sim.engine();
+    common.scene = ctx.scenePath;
+    common.completed = ok;
+    if (!ok) common.diagnosis = sim.diagnose(status) + " " + lastCheckpoint;
+    common.particles = sim.particles();
+    common.simTime = sim.time();
+    common.wallTime = wallSeconds() - ctx.startWall;
+    common.loopTime = report.loopSeconds;
+    common.memoryBytes = sim.memoryBytes();
+    common.warnings = warnings;
+    io::writeSummary(ctx.dir + "/summary.json", common, sim.summaryKeys(report));
+    if (!ok) {
+        fmt::print(stderr, "error: {}\n", common.diagnosis);
+        return kExitUnstable;
+    }
+    if (!ctx.quiet) sim.printDone(ctx.dir, report);
+    return kExitOk;
+}
+
+}  // namespace granulab::app

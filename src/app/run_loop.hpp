@@ -1,0 +1,26 @@
+// SPDX-License-Identifier: MIT
+// The one run loop of every engine (docs/architecture.md "The run loop"): advances the
+// Simulation from output stop to output stop, fires series rows, snapshots, checkpoints and
+// progress on their time or count schedules, resumes through the one checkpoint container and
+// ends with final.csv and summary.json.
+#pragma once
+#include <string>
+
+#include "app/simulation.hpp"
+#include "model/scene_def.hpp"
+
+namespace granulab::app {
+
+struct RunContext {
+    std::string scenePath;
+    std::string dir;        ///< output folder (exists)
+    std::string resumeDir;  ///< empty: a fresh run
+    bool quiet = false;
+    double startWall = 0;   ///< [s] wallSeconds() when the command started
+};
+
+/// Runs `sim` to the end of its plan; returns the exit status (0, or 3 when it became
+/// unstable). Bad input (a foreign checkpoint, an end already reached) throws SceneError.
+int runSimulation(Simulation& sim, const model::SceneDef& scene, const RunContext& context);
+
+}  // namespace granulab::app

@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: MIT
+// Expands explicit particles and generated blocks (lattices, random placement, size
+// distributions, thermal velocities) into one list of initial particles, deterministically
+// from the scene seed (core/rng.hpp).
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "core/error.hpp"
+#include "model/mass_model.hpp"
+#include "model/scene_def.hpp"
+#include "model/shape_pool.hpp"
+
+namespace granulab::dem {
+
+struct InitialParticle {
+    Vec2 position, velocity;
+    Real angle = 0, omega = 0;
+    Real radius = 0;                      ///< [m] disk radius, or the polygon's circumradius
+    std::uint32_t shape = model::kDiskShape;    ///< index into InitialParticles::shapes
+    std::uint32_t material = 0;
+    std::uint32_t origin = 0;  ///< index into InitialParticles::origins (where it was defined)
+};
+
+struct InitialParticles {
+    std::vector<InitialParticle> particles;  ///< id = index
+    std::vector<SourceLoc> origins;          ///< explicit particles and blocks, by origin index
+    model::ShapePool shapes;                    ///< polygon shapes of the particles
+};
+
+/// Mass [kg] of initial particle p with the density rho of its material (model::grainMass).
+inline Real initialMass(const InitialParticles& init, const InitialParticle& p, model::MassModel massModel, Real rho) noexcept {
+    return model::grainMass(massModel, rho, p.radius, p.shape == model::kDiskShape ? Real(-1) : init.shapes.area[p.shape]);
+}
+
+/// Generates all particles. `materialIndex` maps a material name to its index (-1 unknown).
+/// Problems (a block that cannot place its particles) go to `diags`.
+InitialParticles generateParticles(const model::SceneDef& scene,
+                                   const std::vector<std::string>& materialNames,
+                                   Diagnostics& diags);
+
+}  // namespace granulab::dem

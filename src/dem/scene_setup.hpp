@@ -1,0 +1,27 @@
+// SPDX-License-Identifier: MIT
+// The dem engine's set-up from a scene whose Defs io::checkDemDef has checked: contact laws,
+// particles (generated deterministically from the seed), start overlaps and the time-step
+// advice; every problem is reported with file:line through Diagnostics.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+#include "dem/generate.hpp"
+#include "dem/setup.hpp"
+#include "model/scene_def.hpp"
+
+namespace granulab::dem {
+
+struct PreparedScene {
+    InitialParticles initial;
+    TimeStepAdvice advice;
+    Real impactSpeed = 0;  ///< [m/s] speed used to analyse nonlinear contacts
+    std::vector<std::string> warnings;
+};
+
+/// Adds the engine's checks to `diags` (which may already hold the Def-level problems) and
+/// throws SceneError listing all of them if any; otherwise returns the particles and advice.
+PreparedScene prepareScene(const model::SceneDef& scene, Diagnostics& diags);
+
+}  // namespace granulab::dem
