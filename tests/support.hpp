@@ -15,11 +15,12 @@
 #include "dem/setup.hpp"
 #include "io/scene_reader.hpp"
 #include "io/validate.hpp"
+#include "support/scene.hpp"
 
 namespace granulab::test {
 
 inline dem::World makeWorldFromToml(const std::string& toml, const std::vector<io::Override>& overrides = {}) {
-    const model::SceneDef scene = io::readSceneText(toml, "test.toml", overrides);
+    const model::SceneDef scene = readSceneText(toml, "test.toml", overrides);
     const io::ValidatedScene v = io::validate(scene);
     dem::World w = dem::makeWorld(scene, v.initial);
     w.initialize();

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <fmt/format.h>
 
+#include "app/scene_input.hpp"
 #include "dem/contact/hertz_restitution.hpp"
 #include "dem/contact/registry.hpp"
 #include "dem/setup.hpp"
@@ -52,7 +53,7 @@ int infoEdmd(const std::string& scenePath, const model::SceneDef& scene) {
 }  // namespace
 
 int infoCommand(const std::string& scenePath, const std::vector<io::Override>& overrides) {
-    const model::SceneDef scene = io::readScene(scenePath, overrides);
+    const model::SceneDef scene = app::readScene(scenePath, overrides);
     if (scene.run.engine == "edmd") return infoEdmd(scenePath, scene);
     const io::ValidatedScene v = io::validate(scene);
     const auto names = dem::materialNames(scene);

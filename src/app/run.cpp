@@ -11,6 +11,7 @@
 
 #include "app/progress.hpp"
 #include "app/run_edmd.hpp"
+#include "app/scene_input.hpp"
 #include "core/timer.hpp"
 #include "core/version.hpp"
 #include "dem/setup.hpp"
@@ -124,7 +125,7 @@ std::string describeStatus(std::uint32_t status, const dem::World& world, const 
 
 int runCommand(const RunOptions& opt) {
     const double startWall = wallSeconds();
-    const model::SceneDef scene = io::readScene(opt.scene, opt.overrides);  // SceneError -> exit 2 in main
+    const model::SceneDef scene = app::readScene(opt.scene, opt.overrides);  // SceneError -> exit 2 in main
     if (scene.run.engine == "edmd") return runEdmdCommand(opt, scene);
     io::ValidatedScene valid = io::validate(scene);
     for (const auto& w : valid.warnings) fmt::print(stderr, "warning: {}\n", w);

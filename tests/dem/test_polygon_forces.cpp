@@ -29,7 +29,7 @@ std::size_t slotOf(const model::ParticleStore& s, ParticleId id) {
 /// set-up path, without io::validate (which refuses start overlaps). The forces of the first
 /// evaluation (initialize) are those of the prescribed configuration.
 dem::World pressedWorld(const std::string& toml) {
-    const model::SceneDef scene = io::readSceneText(toml, "test.toml", {});
+    const model::SceneDef scene = test::readSceneText(toml, "test.toml", {});
     Diagnostics diags;
     const model::InitialParticles initial = model::generateParticles(scene, dem::materialNames(scene), diags);
     EXPECT_TRUE(diags.empty());
