@@ -18,6 +18,7 @@
 
 #include <fmt/format.h>
 
+#include "app/engine_table.hpp"
 #include "dem/broad_phase.hpp"
 #include "dem/neighbor_list.hpp"
 #include "dem/setup.hpp"
@@ -47,7 +48,7 @@ mu = 0.5
 
 /// Builds an initialized world from scene text (reader -> validate -> makeWorld).
 std::unique_ptr<dem::World> worldFromText(const std::string& text) {
-    const model::SceneDef scene = io::readSceneText(text, "<micro_dem>");
+    const model::SceneDef scene = app::readSceneText(text, "<micro_dem>");
     const dem::PreparedScene valid = app::checkAndPrepareDem(scene);
     auto world = std::make_unique<dem::World>(dem::makeWorld(scene, valid.initial));
     world->initialize();

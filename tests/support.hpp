@@ -16,11 +16,12 @@
 #include "io/scene_reader.hpp"
 #include "app/dem/dem_engine.hpp"
 #include "model/material_names.hpp"
+#include "support/scene.hpp"
 
 namespace granulab::test {
 
 inline dem::World makeWorldFromToml(const std::string& toml, const std::vector<io::Override>& overrides = {}) {
-    const model::SceneDef scene = io::readSceneText(toml, "test.toml", overrides);
+    const model::SceneDef scene = readSceneText(toml, "test.toml", overrides);
     const dem::PreparedScene v = app::checkAndPrepareDem(scene);
     dem::World w = dem::makeWorld(scene, v.initial);
     w.initialize();

@@ -8,15 +8,17 @@
 #include "app/dem/dem_engine.hpp"
 #include "app/edmd/edmd_engine.hpp"
 #include "core/error.hpp"
+#include "io/dem_sections.hpp"
+#include "io/edmd_sections.hpp"
 
 namespace granulab::app {
 
 const std::vector<EngineEntry>& engineTable() {
     static const std::vector<EngineEntry> table = {
-        {"dem", "time-driven soft-particle DEM in 2D: disks and convex polygons (gc2d, cfddem)", makeDemSimulation,
-         demInfo, nullptr, "stress, density and repose analyses of dem runs come with a later version"},
-        {"edmd", "event-driven MD of inelastic hard disks and spheres (edmd)", makeEdmdSimulation, edmdInfo,
-         edmdAnalyze, ""},
+        {"dem", "time-driven soft-particle DEM in 2D: disks and convex polygons (gc2d, cfddem)", io::demSceneSections,
+         makeDemSimulation, demInfo, nullptr, "stress, density and repose analyses of dem runs come with a later version"},
+        {"edmd", "event-driven MD of inelastic hard disks and spheres (edmd)", io::edmdSceneSections, makeEdmdSimulation,
+         edmdInfo, edmdAnalyze, ""},
     };
     return table;
 }
@@ -39,8 +41,20 @@ const EngineEntry& engineOf(const model::SceneDef& scene) {
                                     fmt::format("unknown engine '{}'; allowed: {}", scene.run.engine, engineNamesText())));
 }
 
+namespace {
+std::vector<io::SceneSections> sectionReaders() {
+    std::vector<io::SceneSections> list;
+    for (const auto& e : engineTable()) list.push_back(e.sections());
+    return list;
+}
+}  // namespace
+
 model::SceneDef readScene(const std::string& path, const std::vector<io::Override>& overrides) {
-    return io::readScene(path, overrides);
+    return io::readScene(path, overrides, sectionReaders());
+}
+
+model::SceneDef readSceneText(const std::string& text, const std::string& path, const std::vector<io::Override>& overrides) {
+    return io::readSceneText(text, path, overrides, sectionReaders());
 }
 
 }  // namespace granulab::app

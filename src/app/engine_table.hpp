@@ -20,6 +20,8 @@ namespace granulab::app {
 struct EngineEntry {
     std::string name;         ///< value of run.engine
     std::string description;  ///< one line for help texts
+    /// The engine's sections of the scene file and their reader (io/<engine>_sections.hpp).
+    io::SceneSections (*sections)();
     /// Checks the scene (every problem at once, SceneError) and builds the engine's adapter.
     std::unique_ptr<Simulation> (*build)(const model::SceneDef& scene, const SimulationOptions& options);
     /// `granulab info SCENE`: prints what the scene contains; returns the exit status.
@@ -40,7 +42,10 @@ const EngineEntry& engineOf(const model::SceneDef& scene);
 /// "dem, edmd" (for messages).
 std::string engineNamesText();
 
-/// Reads a scene file with every engine's sections; SceneError lists every problem.
+/// Reads a scene file with the sections of every engine in the table; SceneError lists every
+/// problem. readSceneText: the same from a string (`path` only names it in messages).
 model::SceneDef readScene(const std::string& path, const std::vector<io::Override>& overrides);
+model::SceneDef readSceneText(const std::string& text, const std::string& path,
+                              const std::vector<io::Override>& overrides = {});
 
 }  // namespace granulab::app

@@ -83,7 +83,7 @@ TEST(Integrators, EveryIntegratorResumesBitForBit) {
     for (const char* name : {"verlet", "euler", "pc", "gear"}) {
         SCOPED_TRACE(name);
         const std::vector<io::Override> ov = {io::parseOverride(std::string("dem.integrator=") + name)};
-        const model::SceneDef sc = io::readScene(scene, ov);
+        const model::SceneDef sc = test::readScene(scene, ov);
         const dem::PreparedScene v = app::checkAndPrepareDem(sc);
         dem::World a = dem::makeWorld(sc, v.initial);
         a.initialize();

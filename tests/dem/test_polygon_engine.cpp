@@ -240,7 +240,7 @@ points = [[-1, 0], [1, 0]]
 material = "m"
 )";
     const auto validateAt = [&](const char* dt) {
-        return app::checkAndPrepareDem(io::readSceneText(scene, "block.toml", {{"dem.dt", dt}}));
+        return app::checkAndPrepareDem(test::readSceneText(scene, "block.toml", {{"dem.dt", dt}}));
     };
     const auto coarse = validateAt("3e-5");
     EXPECT_NEAR(coarse.advice.areaAdvisedDt, kPi / 10 * std::sqrt(0.1 / 1e7), 1e-12);

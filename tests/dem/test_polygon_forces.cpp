@@ -29,7 +29,7 @@ std::size_t slotOf(const model::ParticleStore& s, ParticleId id) {
 /// set-up path, without io::validate (which refuses start overlaps). The forces of the first
 /// evaluation (initialize) are those of the prescribed configuration.
 dem::World pressedWorld(const std::string& toml) {
-    const model::SceneDef scene = io::readSceneText(toml, "test.toml", {});
+    const model::SceneDef scene = test::readSceneText(toml, "test.toml", {});
     Diagnostics diags;
     const dem::InitialParticles initial = dem::generateParticles(scene, model::materialNames(scene), diags);
     EXPECT_TRUE(diags.empty());

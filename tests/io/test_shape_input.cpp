@@ -8,6 +8,7 @@
 #include <cmath>
 #include <fmt/format.h>
 
+#include "../support/scene.hpp"
 #include "app/dem/dem_engine.hpp"
 #include "geom/polygon.hpp"
 #include "io/scene_reader.hpp"
@@ -103,7 +104,7 @@ std::string particle(const std::string& shape, Real x, Real y, const std::string
 
 std::string errorsOf(const std::string& text) {
     try {
-        app::checkAndPrepareDem(io::readSceneText(text, "s.toml"));
+        app::checkAndPrepareDem(test::readSceneText(text, "s.toml"));
     } catch (const SceneError& e) {
         return e.what();
     }
@@ -122,7 +123,7 @@ std::string lineOf(const std::string& text, const std::string& needle, bool last
 
 TEST(ShapeInput, EveryKindReadsValidatesAndGenerates) {
     const std::string text = std::string(kBase) + kAllKinds;
-    const model::SceneDef scene = io::readSceneText(text, "s.toml");
+    const model::SceneDef scene = test::readSceneText(text, "s.toml");
     ASSERT_EQ(scene.shapes.size(), 5u);
     EXPECT_EQ(scene.shapes[4].sizeMode, "gauss");
     EXPECT_EQ(scene.shapes[4].cornerVariation, 1);
@@ -169,7 +170,7 @@ TEST(ShapeInput, ClockwisePolygonIsFixedWithAWarning) {
     const std::string text = std::string(kBase) +
                              "[[shape]]\nname = \"cw\"\nkind = \"polygon\"\ncorners = [[0.0, 0.0], [0.0, 0.1], [0.1, 0.1], [0.1, 0.0]]\n" +
                              particle("cw", 0.0, 0.0);
-    const dem::PreparedScene v = app::checkAndPrepareDem(io::readSceneText(text, "s.toml"));
+    const dem::PreparedScene v = app::checkAndPrepareDem(test::readSceneText(text, "s.toml"));
     ASSERT_EQ(v.warnings.size(), 1u);
     EXPECT_HAS(v.warnings[0], lineOf(text, "[[shape]]") + ": shape[1].corners");
     EXPECT_HAS(v.warnings[0], "listed clockwise; reversed to counter-clockwise");

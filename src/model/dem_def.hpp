@@ -1,0 +1,158 @@
+// SPDX-License-Identifier: MIT
+// Plain *Def structs of the dem engine's scene sections ([dem], [[material]], [[contact]],
+// [[shape]], [[particle]], [[block]], [[wall]], [[spring]]; docs/scene-format.md), filled by
+// io/dem_sections.hpp. SI units; 2D masses are per unit depth when the mass model is "disk".
+#pragma once
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+#include "core/types.hpp"
+
+namespace granulab::model {
+
+/// Global viscous damping F = -gamma v on every particle while from <= t < to (LAMMPS fix viscous).
+struct DampingWindowDef {
+    Real gamma = 0;          ///< [kg/s] drag coefficient per particle (areal 2D: [kg/(m s)])
+    Real gammaRotation = 0;  ///< [kg m^2/s] rotational drag, torque = -gammaRotation * omega
+    Real from = 0;           ///< [s]
+    Real to = 1e300;         ///< [s]
+    SourceLoc loc;
+};
+
+struct DemDef {
+    Real dt = 0;  ///< [s] time step (required)
+    std::string integrator =
+        "auto";  ///< auto (gear with polygons, else verlet) | verlet | euler | pc (cfddem seed) | gear (gc2d)
+    Real pcTolerance = 1e-5;          ///< pc: |a^c - a^p| threshold [m/s^2]
+    std::int64_t pcIterations = 10;   ///< pc: corrector iterations, 0 = modified explicit Euler
+    Real pcCorrector = 0.5;           ///< pc: relaxation factor in (0, 1]
+    Real gearC0 = 3.0 / 16.0;         ///< gear: first corrector coefficient
+    std::string broadPhase = "auto";  ///< auto (sort_and_sweep with polygons, else cell_grid) | cell_grid |
+                                      ///< sort_and_sweep | brute_force
+    Real skin = -1;                   ///< [m] neighbour-list skin; <0: 0.2 * largest radius
+    std::string massModel =
+        "disk";  ///< "disk": m = rho pi r^2, I = m r^2/2; "sphere": m = 4/3 rho pi r^3, I = 2/5 m r^2
+    std::int64_t sortEvery = 16;  ///< re-sort slots spatially every k-th rebuild (0: never)
+    bool overlapGuard = false;    ///< skip pair contacts deeper than 1 % of the smaller radius (cfddem seed)
+    Vec2 gravity{0, 0};           ///< [m/s^2]
+    std::vector<DampingWindowDef> damping;
+    SourceLoc loc;
+};
+
+struct MaterialDef {
+    std::string name;
+    Real density = 0;        ///< [kg/m^2] areal density (mass model "disk"), [kg/m^3] ("sphere")
+    Real youngsModulus = 0;  ///< [Pa] for Hertz/Mindlin laws (0: not set)
+    Real poisson = 0;        ///< Poisson ratio, [0, 0.5)
+    SourceLoc loc;
+};
+
+/// One numeric or boolean parameter of a contact law, with where it was written.
+struct LawParamDef {
+    Real value = 0;
+    bool isBool = false;  ///< written as true/false
+    SourceLoc loc;
+};
+
+/// Contact law for one pair of materials, decomposed by axis (DESIGN.md "Contact laws").
+struct ContactDef {
+    std::string materialA, materialB;
+    std::string normal = "hooke";
+    std::string damping = "none";
+    std::string tangential = "none";
+    std::string rolling = "none";
+    std::map<std::string, LawParamDef> params;  ///< law parameters by key (kn, e, mu, ...)
+    SourceLoc loc;
+};
+
+/// Size distribution of generated particles (radius for disks) [m].
+struct SizeDistDef {
+    enum class Kind { Constant, Uniform, Gaussian };
+    Kind kind = Kind::Constant;
+    Real value = 0;         ///< constant radius
+    Real min = 0, max = 0;  ///< uniform bounds, or truncation bounds of the Gaussian
+    Real mean = 0, sigma = 0;
+    SourceLoc loc;
+};
+
+/// A named grain shape (gc2d spec section 2.3), referenced by particles and blocks through
+/// `shape = "name"`. "disk" is built in and needs no [[shape]].
+struct ShapeDef {
+    std::string name;
+    std::string kind;  ///< "polygon" | "regular" | "rectangle" | "ellipse" | "grain"
+    std::vector<Vec2>
+        corners;  ///< polygon: [m] corners, counter-clockwise, any frame (re-centred at the centroid)
+    std::int64_t cornerCount = 0;  ///< regular, ellipse: number of corners N >= 3; grain: N_E
+    Real radius = 0;               ///< regular: [m] circumscribed radius
+    Vec2 size;  ///< rectangle: [m] edge lengths (a, b); ellipse, grain: [m] semi-axes (l_x, l_y)
+    Real chamfer =
+        0;  ///< rectangle: fraction c in [0, 0.5) of each edge cut at each corner (gc2d_rectangle_cut)
+    // grain only (gc2d App. B.1.6): random convex polygons inscribed in ellipses
+    std::string cornerAngles = "rand1";  ///< regular | rand1 | rand2 | full | special_rectangle
+    std::string sizeMode = "const";      ///< const | equal | gauss
+    Real sizeVariation = 0;              ///< I in [0, 1): semi-axes drawn in [l (1 - I), l (1 + I)]
+    bool fullAxes = false;  ///< size gives full axes instead of semi-axes (spec audit note, erratum 26)
+    std::string cornerCountMode = "const";  ///< const | equal | gauss
+    std::int64_t cornerVariation = 0;       ///< N_I: corner count drawn in [N_E - N_I, N_E + N_I]
+    std::string rotationMode = "const";     ///< const | equal | gauss (applies to every shape kind)
+    Real rotation = 0;                      ///< [rad] phi_0, counter-clockwise
+    SourceLoc loc;
+};
+
+struct ParticleDef {
+    std::string shape = "disk";  ///< "disk" or the name of a [[shape]]
+    Vec2 position, velocity;     ///< [m], [m/s]
+    Real angle = 0;              ///< [rad], counter-clockwise
+    Real omega = 0;              ///< [rad/s]
+    Real radius = 0;             ///< [m] disks only (polygon sizes come from their [[shape]])
+    std::string material;
+    SourceLoc loc;
+};
+
+/// A block of generated particles: a lattice filling a region, or random non-overlapping
+/// placement of `count` particles in a region.
+struct BlockDef {
+    enum class Lattice { Hexagonal, Square, Random };
+    Lattice lattice = Lattice::Hexagonal;
+    std::string shape = "disk";  ///< "disk" or the name of a [[shape]] (each particle draws its own grain)
+    Real xmin = 0, ymin = 0, xmax = 0, ymax = 0;  ///< [m] region, half-open [min, max)
+    Real spacing = 0;                             ///< [m] lattice constant (nearest neighbours)
+    std::optional<Vec2> origin;                   ///< [m] one lattice site; default region corner + spacing/2
+    std::int64_t count = -1;                      ///< random: number to place; lattices: cap (-1 none)
+    SizeDistDef radius;
+    std::string material;
+    Vec2 velocity;         ///< [m/s] common velocity
+    Real temperature = 0;  ///< [J] random Gaussian velocities, <m v_x^2> = T, zero net momentum
+    SourceLoc loc;
+};
+
+struct WallDef {
+    std::string name;
+    std::vector<Vec2> points;  ///< [m] polyline corners (a segment has two)
+    bool closed = false;       ///< join the last corner to the first
+    std::string material;
+    Vec2 velocity;  ///< [m/s] prescribed rigid translation
+    SourceLoc loc;
+};
+
+/// A linear spring pulling a particle (gc2d DRAG_*, spec section 3.8): one end is attached to
+/// the particle at a body-frame point (it rotates with the particle, may lie outside it); the
+/// free end starts at `pullStart` and moves with `speed` along `direction` while from <= t <= to
+/// (it rests before and after). Force k (free end - attachment point), zero rest length, applied
+/// at the attachment point (so it also makes a torque).
+struct SpringDef {
+    std::int64_t particle = -1;  ///< particle id (generation order: [[particle]]s, then [[block]]s)
+    Real stiffness = 0;          ///< [N/m] (gc2d DRAG_K, default 100)
+    Vec2 attach;                 ///< [m] attachment point relative to the centroid, body frame
+    Vec2 pullStart;              ///< [m] free end at t <= from (world frame)
+    Real speed = 0;              ///< [m/s] speed of the free end
+    Real direction = 0;          ///< [rad] direction of motion of the free end, counter-clockwise from +x
+    Real from = 0, to = 1e300;   ///< [s] time window of the motion
+    SourceLoc loc;
+};
+
+}  // namespace granulab::model
