@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// granulab command line (CLI11): run, info, render, help, --version. Maps errors to exit codes:
-// 2 bad input, 3 unstable run, 1 anything else.
+// granulab command line (CLI11): run, info, analyze, render, master-equation, help, --version.
+// Maps errors to exit codes (app/exit_codes.hpp): 2 bad input, 3 unstable run, 1 anything else.
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>

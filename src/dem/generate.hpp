@@ -33,7 +33,8 @@ inline Real initialMass(const InitialParticles& init, const InitialParticle& p, 
     return model::grainMass(massModel, rho, p.radius, p.shape == model::kDiskShape ? Real(-1) : init.shapes.area[p.shape]);
 }
 
-/// Generates all particles. `materialIndex` maps a material name to its index (-1 unknown).
+/// Generates all particles; a particle's material id is the index of its material in
+/// `materialNames` (model::materialNames).
 /// Problems (a block that cannot place its particles) go to `diags`.
 InitialParticles generateParticles(const model::SceneDef& scene,
                                    const std::vector<std::string>& materialNames,

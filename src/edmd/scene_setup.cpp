@@ -22,15 +22,18 @@ Real meanPower(int dim, Real a, Real b) {
     return (std::pow(b, dim + 1) - std::pow(a, dim + 1)) / ((dim + 1) * (b - a));
 }
 
-}  // namespace
+/// The scene names used by every step of the set-up.
+struct Context {
+    const model::SceneDef& sc;
+    const model::EdmdDef& e;
+    const SourceLoc& loc;  ///< [edmd], or [run] when the section has no location
+    int D;
+};
 
-Setup resolveScene(const model::SceneDef& sc) {
-    Diagnostics d;
-    const model::EdmdDef& e = sc.edmd;
-    const SourceLoc& loc = e.loc.file.empty() ? sc.run.loc : e.loc;
-    Setup s;
-    s.dim = sc.run.dimension;
-    const int D = s.dim == 2 ? 2 : 3;
+/// Box, count and volume fraction (two given, the third follows; edmd Eq. 4.2-4.4) and the
+/// initial-state spec.
+void resolveParticles(const Context& x, Setup& s, Diagnostics& d) {
+    const auto& [sc, e, loc, D] = x;
     const Real meanVolume = ballVolume(D, 1.0) * meanPower(D, e.radius, e.radiusMax);
     std::array<Real, 3> box{1, 1, 1};
     std::uint64_t count = static_cast<std::uint64_t>(std::max<std::int64_t>(e.count, 0));
@@ -58,6 +61,13 @@ Setup resolveScene(const model::SceneDef& sc) {
     s.init.temperature = e.temperature;
     s.init.seed = sc.run.seed;
 
+}
+
+/// The engine configuration and the kinetic-theory scales of the initial state (t_E, lambda,
+/// the TC contact time default 1e-5 t_E, edmd spec 4.3 [I]).
+void configureEngine(const Context& x, Setup& s) {
+    const auto& [sc, e, loc, D] = x;
+    const auto& box = s.init.box;
     auto& c = s.config;
     c.box = box;
     c.periodic = s.init.periodic;
@@ -82,6 +92,15 @@ Setup resolveScene(const model::SceneDef& sc) {
     const bool dissipative = e.restitution < 1 || e.restitutionModel != "constant" || e.wallRestitution < 1;
     c.tc = e.tc >= 0 ? e.tc : (dissipative ? 1e-5 * s.tE : 0);
 
+}
+
+/// Run length (exactly one of run.end_time, edmd.end_tau, edmd.end_collisions), growth limits
+/// and the cell grid's demand on the box.
+void resolveRunLength(const Context& x, Setup& s, Diagnostics& d) {
+    const auto& [sc, e, loc, D] = x;
+    const auto& c = s.config;
+    const std::uint64_t count = s.init.count;
+    const auto& box = s.init.box;
     // Growth needs a periodic box; shrinking must stay above zero radius.
     if (e.growthRate != 0)
         for (int k = 0; k < D; ++k)
@@ -112,14 +131,32 @@ Setup resolveScene(const model::SceneDef& sc) {
         if (c.periodic[k] && box[k] < 6 * amax)
             d.error(loc, "edmd.box", fmt::format("axis {}: the periodic edge {:.6g} m must hold 3 diameters ({:.6g} m){}", k, box[k],
                                                  6 * amax, e.growthRate > 0 ? " at the end of the growth" : ""));
-    d.throwIfAny();
+}
 
-    // Warnings: inelastic collapse without the TC model (spec 4.3), clustering regime (4.6).
-    const Real lOpt = opticalDepth(D, static_cast<Real>(count), std::min(s.volumeFraction, 0.6));
+/// Warnings: inelastic collapse without the TC model (spec 4.3).
+void addWarnings(const Context& x, Setup& s) {
+    const auto& [sc, e, loc, D] = x;
+    const auto& c = s.config;
+    const Real lOpt = opticalDepth(D, static_cast<Real>(s.init.count), std::min(s.volumeFraction, 0.6));
     if (lOpt > 1 && e.restitution < collapseRestitution(lOpt) && c.tc == 0)
         s.warnings.push_back(fmt::format("restitution {} is below the inelastic-collapse threshold eps_ic = {:.4f} (edmd Eq. 4.8) and "
                                          "the TC model is off (edmd.tc = 0): the run may stall in infinitely many collisions",
                                          e.restitution, collapseRestitution(lOpt)));
+}
+
+}  // namespace
+
+Setup resolveScene(const model::SceneDef& sc) {
+    Diagnostics d;
+    const SourceLoc& loc = sc.edmd.loc.file.empty() ? sc.run.loc : sc.edmd.loc;
+    const Context x{sc, sc.edmd, loc, sc.run.dimension == 2 ? 2 : 3};
+    Setup s;
+    s.dim = sc.run.dimension;
+    resolveParticles(x, s, d);
+    configureEngine(x, s);
+    resolveRunLength(x, s, d);
+    d.throwIfAny();
+    addWarnings(x, s);
     return s;
 }
 

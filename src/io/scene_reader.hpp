@@ -2,7 +2,7 @@
 // Native TOML scene reader (docs/scene-format.md): text -> model::SceneDef. Reads [run] and
 // [output] and hands the running engine's sections to that engine's reader (a SceneSections row,
 // e.g. io/dem_sections.hpp); reports syntax, type and unknown-key errors with file:line. Range
-// and consistency checks are in io/validate.hpp.
+// and consistency checks are in io/validate_<engine>.hpp and the engine's set-up.
 #pragma once
 #include <string>
 #include <vector>

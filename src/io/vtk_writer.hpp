@@ -3,8 +3,7 @@
 // raw binary appended data) and a .pvd collection that strings the snapshots into a time series.
 //
 // Particle file layout (one piece, part 0 of snapshots.pvd, so ParaView shows disks and polygons
-// together when it opens the .pvd; the layout of disk-only scenes is byte for byte the one from
-// before polygons existed):
+// together when it opens the .pvd; a disk-only scene has no Polys and no CellData):
 // - Points, in slot order: a disk contributes its centre, a polygon its world corners
 //   (x, y) + R(angle) * body corner, counter-clockwise.
 // - Verts: one vertex cell per disk (its centre point). Polys: one polygon cell per polygon
@@ -42,21 +41,21 @@ namespace granulab::io {
 /// the file cannot be written.
 void writeParticlesVtp(const std::string& path, const model::ParticleStore& s,
                        const model::ShapePool& shapes, double time);
-/// Disk-only form (an empty pool): kept for callers that do not pass the pool yet; any
-/// polygon particle is written as a vertex with its circumradius, like a disk.
+/// Without a shape pool: every particle is written as a vertex with its radius (a polygon
+/// particle with its circumradius, like a disk).
 void writeParticlesVtp(const std::string& path, const model::ParticleStore& s, double time);
 
 /// Writes wall segments as Lines cells (points = segment end points a, b of each segment) with
 /// the cell data `wall` (index of the wall the segment belongs to) and field data TimeValue [s].
 void writeWallsVtp(const std::string& path, const model::WallSet& w, double time);
 
-/// "vtk/<stem>_NNNNNN.vtp" (6-digit snapshot index), relative to the output folder.
 /// Hard-sphere gas snapshot (edmd engine): points in 3D (z = 0 for disks), point data id,
 /// radius [m], velocity [m/s], speed [m/s] and collisions (per particle, for colouring as in the
 /// thesis' Figs. 1.1, 4.4, 5.1).
 void writeGasVtp(const std::string& path, const analysis::PointSet& gas, const std::vector<std::uint64_t>& ids,
                  const std::vector<double>& collisions, double time);
 
+/// "vtk/<stem>_NNNNNN.vtp" (6-digit snapshot index), relative to the output folder.
 std::string snapshotFileName(const std::string& stem, int index);
 
 /// ParaView .pvd collection: one DataSet per (time, part). write() rewrites the whole file

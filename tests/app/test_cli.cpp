@@ -181,3 +181,38 @@ TEST(Cli, EveryBundledExampleValidates) {
     }
     EXPECT_GE(seen, 4);
 }
+
+// The one checkpoint container (io/checkpoint.hpp): a file of an older format is refused with
+// exit status 2 and a message naming its version, for both engines' old layouts.
+TEST(Cli, OldCheckpointFormatsAreRefusedNamingTheirVersion) {
+    const test::ScratchDir scratch;
+    const auto& dir = scratch.path;
+    const std::string scene = std::string(GRANULAB_SOURCE_DIR) + "/examples/disks_in_box.toml";
+    struct Old {
+        const char* name;
+        std::uint64_t magic;
+        bool versioned;
+        const char* expect;
+    };
+    const Old olds[] = {{"dem_v4", 0x544b434c42414e47ULL, true, "format version 4"},  // "GNABLCKT", version 4
+                        {"edmd_v1", 0x31444d4445424c47ULL, false, "format version 1"}};  // "GLBEDMD1"
+    for (const auto& old : olds) {
+        std::filesystem::create_directories(dir / old.name);
+        std::string bytes(reinterpret_cast<const char*>(&old.magic), sizeof old.magic);
+        const std::uint32_t version = 4;
+        if (old.versioned) bytes.append(reinterpret_cast<const char*>(&version), sizeof version);
+        bytes.append(64, '\0');
+        test::writeText(dir / old.name / "checkpoint.bin", bytes);
+        const auto r = test::runGranulab(fmt::format("run '{}' --quiet --resume {}", scene, old.name), dir);
+        EXPECT_EQ(r.status, 2) << r.output;
+        EXPECT_NE(r.output.find(old.expect), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find("without --resume"), std::string::npos) << r.output;
+    }
+    // A checkpoint of the other engine is refused too.
+    test::writeText(dir / "gas.toml", "[run]\nengine = \"edmd\"\ndimension = 2\nend_time = 0.5\n[edmd]\ncount = 100\n"
+                                       "volume_fraction = 0.2\nradius = 1.0\nequilibrate = 0\n[output]\nvtk = false\n");
+    ASSERT_EQ(test::runGranulab("run gas.toml --quiet --out gas --set edmd.analysis_files=false", dir).status, 0);
+    const auto r = test::runGranulab(fmt::format("run '{}' --quiet --resume gas", scene), dir);
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find("written by the edmd engine"), std::string::npos) << r.output;
+}

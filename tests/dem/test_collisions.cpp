@@ -7,8 +7,10 @@
 #include <cmath>
 #include <cstdio>
 #include <fmt/format.h>
+#include <map>
+#include <string>
 
-#include "../support.hpp"
+#include "../support/dem_world_builder.hpp"
 
 using namespace granulab;
 
@@ -30,49 +32,23 @@ struct Measured {
     Real e = 0, tc = 0;
 };
 
-/// Runs a head-on collision along x; `wall` puts a wall at x = 0 instead of a second disk.
-Measured collide(const std::string& dampingToml, bool wall, Real dt) {
-    const Real r = 0.5, v = 1.0;
-    std::string toml = fmt::format(R"(
-[run]
-end_time = 1.0
-[dem]
-dt = {}
-[[material]]
-name = "a"
-density = 1.0
-[[contact]]
-materials = ["*", "*"]
-kn = 1.0e4
-{}
-)",
-                                   dt, dampingToml);
-    if (wall) {
-        toml += R"(
-[[particle]]
-position = [0.6, 0.0]
-velocity = [-1.0, 0.0]
-radius = 0.5
-material = "a"
-[[wall]]
-points = [[0.0, -2.0], [0.0, 2.0]]
-material = "a"
-)";
-    } else {
-        toml += R"(
-[[particle]]
-position = [-0.6, 0.0]
-velocity = [1.0, 0.0]
-radius = 0.5
-material = "a"
-[[particle]]
-position = [0.6, 0.0]
-velocity = [-1.0, 0.0]
-radius = 0.5
-material = "a"
-)";
-    }
-    dem::World w = test::makeWorldFromToml(toml);
+/// A damping convention of the linear law: the [[contact]] damping key and its parameters.
+struct Damping {
+    std::string name;
+    std::map<std::string, Real> params;
+    Real c = 0;  ///< damping coefficient for meff [N s/m], set in the test
+};
+
+/// Runs a head-on collision along x; `wall` puts a wall at x = 0 instead of a second disk. The
+/// scene is built in code (test::DemSceneBuilder), without scene text.
+Measured collide(const Damping& damping, bool wall, Real dt) {
+    auto params = damping.params;
+    params["kn"] = 1.0e4;
+    test::DemSceneBuilder b(dt, 1.0);
+    b.material("a", 1.0).contact("*", "*", "hooke", damping.name, params);
+    if (wall) b.disk({0.6, 0.0}, {-1.0, 0.0}, 0.5, "a").wall({{0.0, -2.0}, {0.0, 2.0}}, "a");
+    else b.disk({-0.6, 0.0}, {1.0, 0.0}, 0.5, "a").disk({0.6, 0.0}, {-1.0, 0.0}, 0.5, "a");
+    dem::World w = b.world();
     const auto& s = w.store();
     auto slotOf = [&](ParticleId id) {
         for (std::size_t k = 0; k < s.size(); ++k)
@@ -108,12 +84,6 @@ material = "a"
     return m;
 }
 
-struct Case {
-    const char* name;
-    std::string toml;
-    Real c;  ///< damping coefficient for meff (pair: m/2) [N s/m], set in the test
-};
-
 }  // namespace
 
 class LinearCollision : public ::testing::TestWithParam<bool> {};
@@ -125,28 +95,25 @@ TEST_P(LinearCollision, RestitutionAndContactTimeMatchClosedForm) {
     const Real kn = 1.0e4;
     const Real e = 0.7;
     const Real beta = -std::log(e) / std::sqrt(kPi * kPi + std::log(e) * std::log(e));
-    struct Damping {
-        std::string toml;
-        Real c;
-    };
     const Damping cases[] = {
-        {"damping = \"none\"", 0.0},
-        {"damping = \"restitution\"\ne = 0.7", 2 * beta * std::sqrt(meff * kn)},
-        {"damping = \"coefficient\"\ncn = 3.0", 3.0},
-        {"damping = \"lammps\"\ngamma_n = 20.0", 20.0 * meff},
+        {"none", {}, 0.0},
+        {"restitution", {{"e", 0.7}}, 2 * beta * std::sqrt(meff * kn)},
+        {"coefficient", {{"cn", 3.0}}, 3.0},
+        {"lammps", {{"gamma_n", 20.0}}, 20.0 * meff},
     };
     for (const auto& c : cases) {
         const Closed ref = closedForm(meff, kn, c.c);
-        const Measured got = collide(c.toml, wall, ref.tc / 50);
-        SCOPED_TRACE(c.toml);
+        const Measured got = collide(c, wall, ref.tc / 50);
+        SCOPED_TRACE(c.name);
         std::printf("%s %-34s e %.6f (closed %.6f, rel %.1e)  tc %.6g (closed %.6g, rel %.1e)\n", wall ? "wall" : "pair",
-                    c.toml.substr(0, c.toml.find('\n')).c_str(), got.e, ref.e, std::abs(got.e - ref.e) / ref.e, got.tc, ref.tc,
+                    c.name.c_str(), got.e, ref.e, std::abs(got.e - ref.e) / ref.e, got.tc, ref.tc,
                     std::abs(got.tc - ref.tc) / ref.tc);
         EXPECT_LT(std::abs(got.e - ref.e) / ref.e, 1e-3) << "e measured " << got.e << " expected " << ref.e;
         EXPECT_LT(std::abs(got.tc - ref.tc) / ref.tc, 1e-3) << "tc measured " << got.tc << " expected " << ref.tc;
     }
     // The restitution convention reproduces the requested e exactly (up to discretisation).
-    const Measured got = collide("damping = \"restitution\"\ne = 0.7", wall, closedForm(meff, kn, 2 * beta * std::sqrt(meff * kn)).tc / 50);
+    const Measured got =
+        collide({"restitution", {{"e", 0.7}}, 0.0}, wall, closedForm(meff, kn, 2 * beta * std::sqrt(meff * kn)).tc / 50);
     EXPECT_NEAR(got.e, 0.7, 0.7e-3);
 }
 
