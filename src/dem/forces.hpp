@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
-// Stage 4+6 of the DEM step (DESIGN.md): narrow phase of disk-disk and disk-wall candidates
-// fused with the contact laws, plus body forces (gravity, global viscous damping).
+// Stages 4+6 of the DEM step (DESIGN.md): body forces (gravity, global viscous damping, pull
+// springs), then the narrow phase of every candidate (particle pairs and particle-wall pairs, disks
+// and polygons) fused with the contact laws: overlap-depth kernels for disks (dem/forces_depth.hpp),
+// gc2d area kernels for any shapes (dem/forces_area_pairs.hpp). Also the polygon world corners
+// (stage 2 geometry, ShapeContext) and the elastic energy of the contacts.
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -32,24 +35,25 @@ struct PullSpring {
 };
 
 struct BodyForces {
-    Vec2 gravity;             ///< [m/s^2]
-    Real overlapGuard = 0;    ///< skip particle pairs whose overlap exceeds this fraction of the
-                              ///< smaller radius (cfddem spec section 3.1); 0: off
-    Real gamma = 0;           ///< [kg/s] global viscous damping F = -gamma v
-    Real gammaRotation = 0;   ///< [kg m^2/s] torque = -gammaRotation omega
+    Vec2 gravity;            ///< [m/s^2]
+    Real overlapGuard = 0;   ///< skip particle pairs whose overlap exceeds this fraction of the
+                             ///< smaller radius (cfddem spec section 3.1); 0: off
+    Real gamma = 0;          ///< [kg/s] global viscous damping F = -gamma v
+    Real gammaRotation = 0;  ///< [kg m^2/s] torque = -gammaRotation omega
     const std::vector<PullSpring>* springs = nullptr;
-    Real time = 0;            ///< [s] of the evaluation (spring motion)
+    Real time = 0;  ///< [s] of the evaluation (spring motion)
 };
 
 /// Polygon shapes and their orientation at the current force evaluation (gc2d spec section 5.4,
 /// steps 2-3: computed once per particle, not per contact).
 struct ShapeContext {
     const model::ShapePool* pool = nullptr;
-    std::vector<Vec2> world;             ///< [m] world corners of all polygons, slot order
-    std::vector<std::uint32_t> first;    ///< first world corner of each slot (polygons only)
-    geom::FeatureStats featureStats;     ///< closest-feature work since the last reset
+    std::vector<Vec2> world;           ///< [m] world corners of all polygons, slot order
+    std::vector<std::uint32_t> first;  ///< first world corner of each slot (polygons only)
+    geom::FeatureStats featureStats;   ///< closest-feature work since the last reset
     bool anyPolygon = false;
-    /// Recomputes the world corners from positions and angles (gc2d Eq. 2.35, scale s = 1).
+    /// Recomputes the world corners from positions and angles (gc2d Eq. 2.35, scale s = 1, angle
+    /// counter-clockwise); dem/shape_context.cpp.
     void update(const model::ParticleStore& s);
 };
 
@@ -64,15 +68,16 @@ struct ForceStats {
 /// tangential history of every candidate (reset to zero when not touching): the spring grows by
 /// the contact-point displacement of this step, drift velocity * dt. `trialHistory`: read the
 /// accepted springs and write trial springs (committed by the caller once the step is accepted).
-/// reads: x, v (for damping), drift velocities, omega, radius, mass; writes: f, torque, list histories, stats,
+/// reads: x, v, omega, angle, radius, mass, invMass, invInertia, material, shape, drift velocities;
+/// writes: f, torque, list histories (and feature caches), stats, shapes (world corners),
 /// wallForce[w] = total contact force [N] the particles exert on wall w (size = wall count).
 /// `shapes`: polygon shapes (contacts of the gc2d area law; may be empty for disk-only scenes).
 void computeForces(model::ParticleStore& s, const model::WallSet& walls, NeighborList& list,
                    const LawTable& laws, const BodyForces& body, const DriftVelocities& drift, Real dt,
-                   bool trialHistory, ForceStats& stats,
-                   std::vector<Vec2>& wallForce, ShapeContext& shapes) noexcept;
+                   bool trialHistory, ForceStats& stats, std::vector<Vec2>& wallForce,
+                   ShapeContext& shapes) noexcept;
 
-/// Elastic energy [J] stored in all contacts (normal and tangential springs); no side effects.
+/// Elastic energy [J] stored in all contacts (normal, tangential and rolling springs); no side effects.
 /// For the gc2d area law, whose force has no potential in general, the normal part is estimated
 /// as F_n h_eff / 2 (exact for flat faces). `shapes`: the polygon shapes (world corners are
 /// computed here from the store).

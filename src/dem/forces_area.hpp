@@ -3,13 +3,15 @@
 // errata 1-5 of section 12) for every shape pair: polygon-polygon (tracked crossings),
 // disk-polygon, disk-disk (lens) and particle-wall (a wall segment acts as an immovable convex
 // quadrilateral of thickness 2 r behind the segment, on the side away from the particle).
-// Included by forces.cpp only; D and T are the damping and tangential alternatives of the bucket.
+// Included by dem/forces_area_pairs.hpp (the kernels of one bucket) and dem/contact_energy.cpp;
+// D and T are the damping and tangential alternatives of the bucket.
 #pragma once
 #include <cmath>
 #include <limits>
 #include <type_traits>
 #include <vector>
 
+#include "core/error.hpp"
 #include "dem/forces.hpp"
 #include "geom/circle_contact.hpp"
 #include "geom/convex_contact.hpp"
@@ -17,8 +19,10 @@
 namespace granulab::dem::area {
 
 /// Frame of the polygon particle i (the shape must not be kDiskShape).
-inline geom::PolygonFrame frameOf(const model::ParticleStore& s, const ShapeContext& sc, std::uint32_t i) noexcept {
+inline geom::PolygonFrame frameOf(const model::ParticleStore& s, const ShapeContext& sc,
+                                  std::uint32_t i) noexcept {
     const std::uint32_t k = s.shape[i];
+    GL_ASSERT(k != model::kDiskShape && k < sc.pool->size() && i < sc.first.size(), "a polygon of the pool");
     geom::PolygonFrame f;
     f.corners = sc.world.data() + sc.first[i];
     f.n = static_cast<int>(sc.pool->count[k]);
@@ -32,7 +36,8 @@ inline geom::AreaContact pairGeometry(const model::ParticleStore& s, ShapeContex
                                       std::uint32_t j, geom::FeatureCache& cache) noexcept {
     const bool pi = s.shape[i] != model::kDiskShape, pj = s.shape[j] != model::kDiskShape;
     const Vec2 ci{s.x[i], s.y[i]}, cj{s.x[j], s.y[j]};
-    if (pi && pj) return geom::trackPolygonContact(frameOf(s, sc, i), frameOf(s, sc, j), cache, sc.featureStats);
+    if (pi && pj)
+        return geom::trackPolygonContact(frameOf(s, sc, i), frameOf(s, sc, j), cache, sc.featureStats);
     if (!pi && !pj) return geom::circleCircleContact(ci, s.radius[i], cj, s.radius[j]);
     if (!pi) {
         const auto f = frameOf(s, sc, j);
@@ -54,7 +59,7 @@ inline void wallQuad(Vec2 a, Vec2 b, Vec2 from, Real thickness, WallQuad& q) noe
     if (cross(b - a, from - a) < 0) std::swap(a, b);  // particle on the left of a -> b
     const Vec2 d = b - a;
     const Real len = norm(d);
-    const Vec2 out = len > 0 ? Vec2{d.y, -d.x} / len : Vec2{0, -1};  // right of a -> b: the solid side
+    const Vec2 out = len > 0 ? Vec2{d.y, -d.x} / len : Vec2{0, -1};      // right of a -> b: the solid side
     const Vec2 w[4] = {a, a + out * thickness, b + out * thickness, b};  // counter-clockwise
     for (int k = 0; k < 4; ++k) q.world[k] = w[k];
     q.frame.corners = q.world;
@@ -65,8 +70,8 @@ inline void wallQuad(Vec2 a, Vec2 b, Vec2 from, Real thickness, WallQuad& q) noe
 
 /// Geometry of particle i against wall segment [a, b] (the plate behind it), normal pushing i
 /// away from the wall.
-inline geom::AreaContact wallGeometry(const model::ParticleStore& s, ShapeContext& sc, std::uint32_t i, Vec2 a, Vec2 b,
-                                      geom::FeatureCache& cache) noexcept {
+inline geom::AreaContact wallGeometry(const model::ParticleStore& s, ShapeContext& sc, std::uint32_t i,
+                                      Vec2 a, Vec2 b, geom::FeatureCache& cache) noexcept {
     const Vec2 xi{s.x[i], s.y[i]};
     WallQuad quad;
     wallQuad(a, b, xi, 2 * s.radius[i], quad);
@@ -78,9 +83,9 @@ inline geom::AreaContact wallGeometry(const model::ParticleStore& s, ShapeContex
 /// Everything the gc2d law needs about one contact; j may be a wall (infinite mass).
 struct AreaPair {
     geom::AreaContact g;
-    Vec2 ri, rj;             ///< [m] lever arms s - x_i, s - x_j (rj unused for walls)
-    Vec2 vi, vj;             ///< [m/s] contact-point velocities (vj: wall surface velocity)
-    Vec2 di, dj;             ///< [m/s] contact-point drift velocities for the spring increment
+    Vec2 ri, rj;  ///< [m] lever arms s - x_i, s - x_j (rj unused for walls)
+    Vec2 vi, vj;  ///< [m/s] contact-point velocities (vj: wall surface velocity)
+    Vec2 di, dj;  ///< [m/s] contact-point drift velocities for the spring increment
     bool hasDrift = false;
     Real invMi = 0, invMj = 0;  ///< [1/kg] (0 for walls)
     Real invIi = 0, invIj = 0;  ///< [1/(kg m^2)]
@@ -95,8 +100,8 @@ struct AreaForce {
 /// gc2d Eq. 2.20-2.29 for one contact; updates the spring xi [m] and the old area [m^2].
 /// `invDt` = 1/dt [1/s]; `dt` [s].
 template <class D, class T>
-AreaForce areaLaw(const AreaNormal& nl, const D& dl, const T& tl, const AreaPair& c, Real dt, Real invDt, Real& ioXi,
-                  Real& ioAreaOld) noexcept {
+AreaForce areaLaw(const AreaNormal& nl, const D& dl, const T& tl, const AreaPair& c, Real dt, Real invDt,
+                  Real& ioXi, Real& ioAreaOld) noexcept {
     const auto& g = c.g;
     const Real ri = norm(c.ri);
     // 1/l with l = r_i r_j/(r_i + r_j) (Eq. 2.15); a wall's lever arm is infinite (spec 3.7): l = r_i.
@@ -113,7 +118,7 @@ AreaForce areaLaw(const AreaNormal& nl, const D& dl, const T& tl, const AreaPair
     const Real fel = nl.E * hEff;     // Eq. 2.20
     out.overlapDepth = hEff;
     Real fn = fel;
-    if constexpr (std::is_same_v<D, AreaDamping>) {  // Eq. 2.21/2.22, erratum 1
+    if constexpr (std::is_same_v<D, AreaDamping>) {    // Eq. 2.21/2.22, erratum 1
         const Real mperp = 1.0 / (c.invMi + c.invMj);  // reduced mass; m_i at a wall
         const Real dA = g.area - ioAreaOld;
         Real damp = dl.gamma * std::sqrt(nl.E * mperp) * dA * invL * invDt;
@@ -128,7 +133,8 @@ AreaForce areaLaw(const AreaNormal& nl, const D& dl, const T& tl, const AreaPair
         const Real vpar = dot(c.vi - c.vj, t);
         const Real dpar = c.hasDrift ? dot(c.di - c.dj, t) : 0.0;
         ioXi += dpar * dt;  // S = k_t xi, the spring attached at first touch
-        const Real invMpar = c.invMi + c.invMj + norm2(c.ri) * c.invIi + (c.wall ? 0.0 : norm2(c.rj) * c.invIj);
+        const Real invMpar =
+            c.invMi + c.invMj + norm2(c.ri) * c.invIi + (c.wall ? 0.0 : norm2(c.rj) * c.invIj);
         const Real spring = tl.kt * ioXi;
         const Real visc = tl.damped ? std::sqrt(tl.kt / invMpar) * vpar : 0.0;
         const Real trial = spring + visc;

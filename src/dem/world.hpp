@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
-// The DEM world and its straight-line step (DESIGN.md "The DEM step"), each stage timed.
-// Stages 1 predict, 2+3 neighbour check/rebuild (geometry, broad phase, history sync),
-// 4+6 forces (narrow phase fused with the laws), 7 correct, 8 scene updaters (moving walls).
-// Stage 9 (observers) runs in the caller, which owns all I/O.
+// The DEM world and its straight-line step (DESIGN.md "The DEM step"), each stage timed. In the
+// order they run: 1 predict, 8 scene updaters (moving walls, before the forces of the new time),
+// 2+3+5 neighbour check and, when needed, rebuild (broad phase, history transfer), 4+6 forces
+// (polygon world corners, narrow phase fused with the laws, body forces), 7 correct; 4+6+7 repeat
+// until an iterating integrator accepts the step. Stage 9 (observers) runs in the caller, which
+// owns all I/O.
 #pragma once
 #include <cstdint>
 #include <iosfwd>
@@ -31,12 +33,12 @@ struct DampingWindow {
 };
 
 struct WorldConfig {
-    Real dt = 0;                      ///< [s]
-    Vec2 gravity;                     ///< [m/s^2]
+    Real dt = 0;   ///< [s]
+    Vec2 gravity;  ///< [m/s^2]
     std::vector<DampingWindow> damping;
-    Real skin = 0;                    ///< [m] neighbour-list skin
-    int sortEveryRebuilds = 16;       ///< spatial re-sort of slots every k-th rebuild (0: never)
-    Real overlapGuard = 0;            ///< see BodyForces::overlapGuard
+    Real skin = 0;               ///< [m] neighbour-list skin
+    int sortEveryRebuilds = 16;  ///< spatial re-sort of slots every k-th rebuild (0: never)
+    Real overlapGuard = 0;       ///< see BodyForces::overlapGuard
     IntegratorParams integrator;
     std::string broadPhase = "cell_grid";
     std::vector<PullSpring> springs;  ///< slots refer to the store given to the World

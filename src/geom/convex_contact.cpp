@@ -7,6 +7,7 @@
 #include <cmath>
 #include <vector>
 
+#include "core/error.hpp"
 #include "geom/polygon.hpp"
 
 namespace granulab::geom {
@@ -14,10 +15,13 @@ namespace granulab::geom {
 namespace {
 
 /// > 0: p lies left of the directed line e0 -> e1 (inside for a counter-clockwise edge).
-inline Real side(Vec2 p, Vec2 e0, Vec2 e1) noexcept { return cross(e1 - e0, p - e0); }
+inline Real side(Vec2 p, Vec2 e0, Vec2 e1) noexcept {
+    return cross(e1 - e0, p - e0);
+}
 
 /// k mod n for k in (-2n, 2n) (index differences and +-2 offsets), without an integer division.
 inline int wrap(int k, int n) noexcept {
+    GL_ASSERT(k > -2 * n && k < 2 * n, "index difference within two turns");
     if (k < 0) k += n;
     if (k < 0) k += n;
     if (k >= n) k -= n;
@@ -30,8 +34,8 @@ inline int wrap(int k, int n) noexcept {
 /// pair with two boundary crossings exactly one (x, y) qualifies.
 struct Entry {
     Vec2 point;
-    Real tx = 0;                  ///< parameter of the point along X-edge x
-    Real tyNum = 0, tyDen = 1;    ///< parameter along Y-edge y = tyNum / tyDen (rarely needed)
+    Real tx = 0;                ///< parameter of the point along X-edge x
+    Real tyNum = 0, tyDen = 1;  ///< parameter along Y-edge y = tyNum / tyDen (rarely needed)
     Real ty() const noexcept { return tyNum / tyDen; }
 };
 
@@ -55,9 +59,9 @@ inline bool entryAt(const PolygonFrame& X, const PolygonFrame& Y, int x, int y, 
 
 /// Index offsets tried around a cached crossing: single-edge moves first (the usual case as a
 /// contact rolls or slides), then both edges, then two edges away.
-constexpr int kOffsets[][2] = {{1, 0},  {-1, 0}, {0, 1},  {0, -1}, {1, 1},   {-1, -1}, {1, -1}, {-1, 1},
-                               {2, 0},  {-2, 0}, {0, 2},  {0, -2}, {2, 1},   {1, 2},   {-2, -1}, {-1, -2},
-                               {2, -1}, {-1, 2}, {-2, 1}, {1, -2}, {2, 2},   {-2, -2}, {2, -2}, {-2, 2}};
+constexpr int kOffsets[][2] = {{1, 0},  {-1, 0}, {0, 1},  {0, -1}, {1, 1}, {-1, -1}, {1, -1},  {-1, 1},
+                               {2, 0},  {-2, 0}, {0, 2},  {0, -2}, {2, 1}, {1, 2},   {-2, -1}, {-1, -2},
+                               {2, -1}, {-1, 2}, {-2, 1}, {1, -2}, {2, 2}, {-2, -2}, {2, -2},  {-2, 2}};
 
 inline void storeCrossings(FeatureCache& cache, int a1, int b1, int a2, int b2) noexcept {
     cache.state = FeatureCache::Crossing;
@@ -85,8 +89,8 @@ bool findEntryNear(const PolygonFrame& X, const PolygonFrame& Y, int& x, int& y,
 }
 
 /// Overlap polygon from the two crossings: A-entry (a1, b1, e1) and B-entry (b2 into A at a2, e2).
-AreaContact chainContact(const PolygonFrame& A, const PolygonFrame& B, int a1, int b1, const Entry& e1, int a2, int b2,
-                         const Entry& e2) noexcept {
+AreaContact chainContact(const PolygonFrame& A, const PolygonFrame& B, int a1, int b1, const Entry& e1,
+                         int a2, int b2, const Entry& e2) noexcept {
     int kA = wrap(a2 - a1, A.n);
     if (kA == 0 && !(e2.ty() > e1.tx)) kA = A.n;  // e2.ty(): parameter of the B-entry along A-edge a2
     int kB = wrap(b1 - b2, B.n);
@@ -192,7 +196,8 @@ inline int voronoiStep(const PolygonFrame& P, int& f, Vec2 q) noexcept {
 
 /// Closest points of feature fa of A and fb of B; an edge-edge pair is reduced to the
 /// corner-edge pair that realises it (returns false if the two edges intersect).
-bool featurePoints(const PolygonFrame& A, const PolygonFrame& B, int& fa, int& fb, Vec2& pa, Vec2& pb) noexcept {
+bool featurePoints(const PolygonFrame& A, const PolygonFrame& B, int& fa, int& fb, Vec2& pa,
+                   Vec2& pb) noexcept {
     const int ka = fa >> 1, kb = fb >> 1;
     const bool ea = fa & 1, eb = fb & 1;
     if (!ea && !eb) {
@@ -210,8 +215,8 @@ bool featurePoints(const PolygonFrame& A, const PolygonFrame& B, int& fa, int& f
         if (((s0 <= 0 && s1 >= 0) || (s0 >= 0 && s1 <= 0)) && ((t0 <= 0 && t1 >= 0) || (t0 >= 0 && t1 <= 0)))
             return false;
         // Non-intersecting segments: the distance is realised at an endpoint.
-        const Vec2 q[4] = {closestOnSegment(b0, b1, a0), closestOnSegment(b0, b1, a1), closestOnSegment(a0, a1, b0),
-                           closestOnSegment(a0, a1, b1)};
+        const Vec2 q[4] = {closestOnSegment(b0, b1, a0), closestOnSegment(b0, b1, a1),
+                           closestOnSegment(a0, a1, b0), closestOnSegment(a0, a1, b1)};
         const Real d[4] = {norm2(q[0] - a0), norm2(q[1] - a1), norm2(q[2] - b0), norm2(q[3] - b1)};
         const int best = static_cast<int>(std::min_element(d, d + 4) - d);
         if (best < 2) {
@@ -230,7 +235,8 @@ bool featurePoints(const PolygonFrame& A, const PolygonFrame& B, int& fa, int& f
 /// Walks (fa, fb) to the closest features. Apart: the distance is positive and the features are
 /// certified by the Voronoi regions. Suspect: the polygons may overlap (features intersect or a
 /// closest point lies on the inner side of an edge); fa, fb are then near the contact.
-Walk linCanny(const PolygonFrame& A, const PolygonFrame& B, int& fa, int& fb, std::uint64_t& iterations) noexcept {
+Walk linCanny(const PolygonFrame& A, const PolygonFrame& B, int& fa, int& fb,
+              std::uint64_t& iterations) noexcept {
     const int limit = 2 * (A.n + B.n) + 8;
     for (int it = 0; it < limit; ++it) {
         ++iterations;
@@ -244,8 +250,10 @@ Walk linCanny(const PolygonFrame& A, const PolygonFrame& B, int& fa, int& fb, st
         // Certify with a strict separating line: an edge feature must have the other closest
         // point strictly outside its line. (The Euclidean distance to the projected point can be
         // a round-off 1e-19 when that point lies on the line: aligned faces overlapping.)
-        if (fa & 1) return side(pb, A.corner(fa >> 1), A.corner((fa >> 1) + 1)) < 0 ? Walk::Apart : Walk::Suspect;
-        if (fb & 1) return side(pa, B.corner(fb >> 1), B.corner((fb >> 1) + 1)) < 0 ? Walk::Apart : Walk::Suspect;
+        if (fa & 1)
+            return side(pb, A.corner(fa >> 1), A.corner((fa >> 1) + 1)) < 0 ? Walk::Apart : Walk::Suspect;
+        if (fb & 1)
+            return side(pa, B.corner(fb >> 1), B.corner((fb >> 1) + 1)) < 0 ? Walk::Apart : Walk::Suspect;
         return norm2(pa - pb) > 0 ? Walk::Apart : Walk::Suspect;
     }
     return Walk::Suspect;
@@ -283,7 +291,8 @@ bool inside(const PolygonFrame& P, Vec2 q) noexcept {
     return true;
 }
 
-AreaContact coldStart(const PolygonFrame& A, const PolygonFrame& B, FeatureCache& cache, FeatureStats& stats) noexcept {
+AreaContact coldStart(const PolygonFrame& A, const PolygonFrame& B, FeatureCache& cache,
+                      FeatureStats& stats) noexcept {
     ++stats.coldStarts;
     stats.iterations += static_cast<std::uint64_t>(A.n) * static_cast<std::uint64_t>(B.n);
     int a1 = 0, b1 = 0, a2 = 0, b2 = 0;
@@ -327,8 +336,8 @@ AreaContact coldStart(const PolygonFrame& A, const PolygonFrame& B, FeatureCache
 }
 
 /// Both crossings near (a1, b1) and (a2, b2); false if either is not found locally.
-bool trackCrossings(const PolygonFrame& A, const PolygonFrame& B, int& a1, int& b1, int& a2, int& b2, AreaContact& out,
-                    FeatureStats& stats) noexcept {
+bool trackCrossings(const PolygonFrame& A, const PolygonFrame& B, int& a1, int& b1, int& a2, int& b2,
+                    AreaContact& out, FeatureStats& stats) noexcept {
     Entry e1, e2;
     if (!findEntryNear(A, B, a1, b1, e1, stats.iterations)) return false;
     if (!findEntryNear(B, A, b2, a2, e2, stats.iterations)) return false;
@@ -340,18 +349,25 @@ bool trackCrossings(const PolygonFrame& A, const PolygonFrame& B, int& a1, int& 
 
 AreaContact trackPolygonContact(const PolygonFrame& A, const PolygonFrame& B, FeatureCache& cache,
                                 FeatureStats& stats) noexcept {
+    GL_ASSERT(A.corners && B.corners && A.n >= 3 && B.n >= 3, "two polygons");
+    GL_ASSERT(2 * A.n <= 0xFFFF && 2 * B.n <= 0xFFFF, "feature indices fit the cache");
     ++stats.evaluations;
     if (cache.state == FeatureCache::Crossing) {
-        // (the cache always holds valid indices; the guard only protects against a foreign cache)
+        // The cache of this pair always holds valid indices (asserted); the guard only keeps a
+        // foreign cache from reading out of range.
+        GL_ASSERT(cache.f[0] < A.n && cache.f[1] < B.n && cache.f[2] < A.n && cache.f[3] < B.n,
+                  "crossing cache of this pair");
         const auto idx = [](std::uint16_t f, int n) { return f < n ? static_cast<int>(f) : 0; };
-        int a1 = idx(cache.f[0], A.n), b1 = idx(cache.f[1], B.n), a2 = idx(cache.f[2], A.n), b2 = idx(cache.f[3], B.n);
+        int a1 = idx(cache.f[0], A.n), b1 = idx(cache.f[1], B.n), a2 = idx(cache.f[2], A.n),
+            b2 = idx(cache.f[3], B.n);
         AreaContact c;
         if (trackCrossings(A, B, a1, b1, a2, b2, c, stats)) {
             storeCrossings(cache, a1, b1, a2, b2);
             return c;
         }
         // Probably separated: walk from the edges of the last crossing.
-        int fa = 2 * a1 + 1, fb = 2 * b1 + 1;  // a1, b1 as cached (the search leaves them unchanged on failure)
+        int fa = 2 * a1 + 1,
+            fb = 2 * b1 + 1;  // a1, b1 as cached (the search leaves them unchanged on failure)
         if (linCanny(A, B, fa, fb, stats.iterations) == Walk::Apart) {
             cache.state = FeatureCache::Apart;
             cache.f[0] = static_cast<std::uint16_t>(fa);
@@ -361,6 +377,7 @@ AreaContact trackPolygonContact(const PolygonFrame& A, const PolygonFrame& B, Fe
         return coldStart(A, B, cache, stats);
     }
     if (cache.state == FeatureCache::Apart) {
+        GL_ASSERT(cache.f[0] < 2 * A.n && cache.f[1] < 2 * B.n, "closest-feature cache of this pair");
         int fa = cache.f[0] < 2 * A.n ? cache.f[0] : 0, fb = cache.f[1] < 2 * B.n ? cache.f[1] : 0;
         if (linCanny(A, B, fa, fb, stats.iterations) == Walk::Apart) {
             cache.f[0] = static_cast<std::uint16_t>(fa);

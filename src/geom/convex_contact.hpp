@@ -13,6 +13,7 @@
 #pragma once
 #include <cstdint>
 
+#include "core/error.hpp"
 #include "core/types.hpp"
 #include "geom/area_contact.hpp"
 
@@ -23,10 +24,12 @@ namespace granulab::geom {
 struct PolygonFrame {
     const Vec2* corners = nullptr;  ///< [m] world corners, counter-clockwise
     int n = 0;
-    Vec2 centre;                    ///< [m] centroid
-    Real inradius = 0;              ///< [m] inscribed radius about the centroid
+    Vec2 centre;        ///< [m] centroid
+    Real inradius = 0;  ///< [m] inscribed radius about the centroid
 
+    /// Corner k for k in [-n, 2n) (index arithmetic one turn either way).
     Vec2 corner(int k) const noexcept {
+        GL_ASSERT(k >= -n && k < 2 * n, "corner index within one turn");
         if (k >= n) k -= n;
         if (k < 0) k += n;
         return corners[k];

@@ -1,30 +1,40 @@
 // SPDX-License-Identifier: MIT
-// ParticleStore: append and reorder (DESIGN.md "Particle state").
+// ParticleStore: append, reorder and checkpoint the columns (DESIGN.md "Particle state").
 #include "model/particle_store.hpp"
+
+#include <istream>
+#include <ostream>
+#include <stdexcept>
+
+#include "core/binary_io.hpp"
+#include "core/error.hpp"
 
 namespace granulab::model {
 
 namespace {
-template <class... Columns>
-void reserveAll(std::size_t n, Columns&... cols) {
-    (cols.reserve(n), ...);
-}
-
 template <class T>
 void permuteColumn(std::vector<T>& col, const std::vector<std::uint32_t>& order) {
     std::vector<T> out(col.size());
-    for (std::size_t k = 0; k < order.size(); ++k) out[k] = col[order[k]];
+    for (std::size_t k = 0; k < order.size(); ++k) {
+        GL_ASSERT(order[k] < col.size(), "permutation entry is a slot");
+        out[k] = col[order[k]];
+    }
     col.swap(out);
 }
 }  // namespace
 
-void ParticleStore::reserve(std::size_t n) {
-    reserveAll(n, x, y, vx, vy, angle, omega, fx, fy, torque, radius, mass, invMass, invInertia,
-               material, id, shape);
+bool ParticleStore::consistent() const noexcept {
+    bool ok = true;
+    forEachColumn([&](const auto& col) { ok = ok && col.size() == size(); });
+    return ok;
 }
 
-std::size_t ParticleStore::add(ParticleId pid, Vec2 pos, Vec2 vel, Real angle0, Real omega0, Real r,
-                               Real m, Real inertia, std::uint32_t mat, std::uint32_t shapeIndex) {
+void ParticleStore::reserve(std::size_t n) {
+    forEachColumn([n](auto& col) { col.reserve(n); });
+}
+
+std::size_t ParticleStore::add(ParticleId pid, Vec2 pos, Vec2 vel, Real angle0, Real omega0, Real r, Real m,
+                               Real inertia, std::uint32_t mat, std::uint32_t shapeIndex) {
     x.push_back(pos.x);
     y.push_back(pos.y);
     vx.push_back(vel.x);
@@ -41,26 +51,23 @@ std::size_t ParticleStore::add(ParticleId pid, Vec2 pos, Vec2 vel, Real angle0, 
     material.push_back(mat);
     id.push_back(pid);
     shape.push_back(shapeIndex);
+    GL_ASSERT(consistent(), "add() fills every column");
     return x.size() - 1;
 }
 
 void ParticleStore::permute(const std::vector<std::uint32_t>& order) {
-    permuteColumn(x, order);
-    permuteColumn(y, order);
-    permuteColumn(vx, order);
-    permuteColumn(vy, order);
-    permuteColumn(angle, order);
-    permuteColumn(omega, order);
-    permuteColumn(fx, order);
-    permuteColumn(fy, order);
-    permuteColumn(torque, order);
-    permuteColumn(radius, order);
-    permuteColumn(mass, order);
-    permuteColumn(invMass, order);
-    permuteColumn(invInertia, order);
-    permuteColumn(material, order);
-    permuteColumn(id, order);
-    permuteColumn(shape, order);
+    GL_ASSERT(order.size() == size() && consistent(), "a permutation of all slots");
+    forEachColumn([&](auto& col) { permuteColumn(col, order); });
+}
+
+void ParticleStore::save(std::ostream& os) const {
+    GL_ASSERT(consistent(), "columns of equal length");
+    forEachColumn([&](const auto& col) { writeVector(os, col); });
+}
+
+void ParticleStore::load(std::istream& is) {
+    forEachColumn([&](auto& col) { readVector(is, col); });
+    if (!consistent()) throw std::runtime_error("checkpoint corrupt (particle columns of different lengths)");
 }
 
 }  // namespace granulab::model

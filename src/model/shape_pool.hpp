@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 // Pool of convex polygon shapes, stored once in the body frame (gc2d spec sections 2.1-2.2):
 // counter-clockwise corners relative to the centroid at angle 0. Particles refer to a shape by
-// index; disks have no entry (kDiskShape). Several particles may share one shape (a named regular
-// polygon), random gc2d grains get one entry each.
-// Thermal size scaling s (spec section 2.4) would be a per-particle factor applied where the world
-// corners are computed (dem::ShapeContext::update, gc2d Eq. 2.35); the pool itself never changes
-// after set-up. s = 1 in every thesis result and here.
+// index; disks have no entry (kDiskShape). The particles of one named deterministic shape
+// (polygon, regular, rectangle, ellipse) share one entry, random gc2d grains get one entry each.
+// The pool never changes after set-up (model/generate.cpp fills it). Thermal size scaling s (spec
+// section 2.4) is not implemented (s = 1); it would be a per-particle factor where the world
+// corners are computed (dem::ShapeContext::update in dem/shape_context.cpp, gc2d Eq. 2.35).
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -34,7 +34,8 @@ struct ShapePool {
     std::vector<Vec2> shapeCorners(std::uint32_t k) const;
     std::size_t memoryBytes() const noexcept {
         return corners.capacity() * sizeof(Vec2) + (start.capacity() + count.capacity()) * 4 +
-               (area.capacity() + secondMoment.capacity() + circumradius.capacity() + inradius.capacity()) * sizeof(Real);
+               (area.capacity() + secondMoment.capacity() + circumradius.capacity() + inradius.capacity()) *
+                   sizeof(Real);
     }
 };
 

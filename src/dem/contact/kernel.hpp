@@ -1,10 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The per-contact force evaluation, fixed order normal -> damping -> cap -> tangential
 // (STYLE.md (b), LAMMPS GranularModel order). Template over one alternative per axis, so the
-// hot loop has no dispatch; dem/forces.cpp visits once per bucket of pairs.
+// hot loop has no dispatch; dem/forces_detail.hpp (forEachBucket) visits once per bucket of pairs.
 #pragma once
 #include <cmath>
-
 
 #include "dem/contact/laws.hpp"
 
@@ -52,8 +51,8 @@ inline Real contactEnergy(const ResolvedLaw<Normal, Damping, Tangential>& law, R
                           Real xi, Real zeta) noexcept {
     // Rolling spring: M = k_r Xi with relative rotation Xi / R_eff, so E = k_r Xi^2 / (2 R_eff).
     const Real rolling = law.rolling.enabled ? 0.5 * law.rolling.kr * zeta * zeta / reff : 0.0;
-    return law.normal.energy(overlap, reff) + law.tangential.energy(overlap, reff, xi, law.normal.force(overlap, reff)) +
-           rolling;
+    return law.normal.energy(overlap, reff) +
+           law.tangential.energy(overlap, reff, xi, law.normal.force(overlap, reff)) + rolling;
 }
 
 }  // namespace granulab::dem

@@ -3,22 +3,36 @@
 // a small stateless struct with its parameters, one noexcept function, and its registration
 // (keyword, documentation, parameter table with units, ranges and defaults, factory).
 //
-// TO ADD A LAW, EDIT ONLY THIS FILE: write its struct with the static members below and append
-// it to the variant of its axis. The registry (registry.cpp), validation, `granulab help laws`
-// and the force kernels pick it up from the variant.
+// TO ADD AN OVERLAP-DEPTH LAW, EDIT ONLY THIS FILE: write its struct with the static members
+// below (kUsesReff = true if it reads R_eff) and append it to the variant of its axis. The
+// registry (registry.cpp), validation, `granulab help laws`, the depth kernels
+// (dem/forces_depth.hpp) and the contact energy pick it up from the variant. A law of the gc2d
+// area family also needs its term in dem/forces_area.hpp (areaLaw), the form traits in
+// dem/forces_detail.hpp and its pairing rule in registry.cpp (buildContactLaw).
 #pragma once
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 #include <variant>
 #include <vector>
 
 #include "core/types.hpp"
 #include "dem/contact/hertz_restitution.hpp"
-#include "dem/contact/law_params.hpp"
 #include "dem/contact/kinematics.hpp"
+#include "dem/contact/law_params.hpp"
 
 namespace granulab::dem {
+
+/// True for a law that reads R_eff (static member kUsesReff = true): the depth kernels compute
+/// R_eff, a division, only for such laws (and for rolling resistance).
+template <class Law>
+constexpr bool lawUsesReff() noexcept {
+    if constexpr (requires { Law::kUsesReff; })
+        return Law::kUsesReff;
+    else
+        return false;
+}
 
 // ---------------------------------------------------------------- normal spring
 /// Linear (Hooke) spring: F = kn * delta. kn [N/m].
@@ -44,8 +58,10 @@ struct HookeNormal {
 struct HertzNormal {
     static constexpr LawAxis kAxis = LawAxis::Normal;
     static constexpr const char* kKeyword = "hertz";
+    static constexpr bool kUsesReff = true;
     static constexpr const char* kDoc =
-        "Hertz spring F_n = 4/3 E* sqrt(R_eff) delta^(3/2); E* from the materials' youngs_modulus and poisson";
+        "Hertz spring F_n = 4/3 E* sqrt(R_eff) delta^(3/2); E* from the materials' youngs_modulus and "
+        "poisson";
     static std::vector<LawParamSpec> params() { return {}; }
     static HertzNormal make(const LawParams& p) { return {4.0 / 3.0 * p.effectiveModulus()}; }
 
@@ -61,16 +77,19 @@ struct HertzNormal {
 /// gc2d overlap-area law (gc2d spec section 3.2, Eq. 2.20): F_n = E A / l with the overlap area A
 /// and l = r_i r_j/(r_i + r_j) from the lever arms of the contact point; cohesion (Eq. 2.28)
 /// k_coh |c1 c2| pulls while the bodies overlap. Works for every shape pair and is the law of
-/// polygon contacts; its kernel is forces_area.cpp, not the overlap-depth kernel.
+/// polygon contacts; its kernel is dem/forces_area.hpp (dem/forces_area_pairs.hpp), not the
+/// overlap-depth kernel.
 struct AreaNormal {
     static constexpr LawAxis kAxis = LawAxis::Normal;
     static constexpr const char* kKeyword = "area";
     static constexpr const char* kDoc =
-        "gc2d overlap-area law F_n = E A / l, l = r_i r_j/(r_i + r_j); cohesion k_coh |c1 c2| (any shapes, required by polygons)";
+        "gc2d overlap-area law F_n = E A / l, l = r_i r_j/(r_i + r_j); cohesion k_coh |c1 c2| (any shapes, "
+        "required by polygons)";
     static std::vector<LawParamSpec> params() {
-        return {lawParam("E", "N/m", 0, kUnbounded, true, "required", "2D elastic modulus (gc2d default 1e7)"),
-                lawParam("cohesion", "N/m", 0, kUnbounded, false, "0",
-                         "k_coh: attraction k_coh |c1 c2| along -n while overlapping (gc2d Eq. 2.28)")};
+        return {
+            lawParam("E", "N/m", 0, kUnbounded, true, "required", "2D elastic modulus (gc2d default 1e7)"),
+            lawParam("cohesion", "N/m", 0, kUnbounded, false, "0",
+                     "k_coh: attraction k_coh |c1 c2| along -n while overlapping (gc2d Eq. 2.28)")};
     }
     static AreaNormal make(const LawParams& p) { return {p.require("E"), p.getOr("cohesion", 0.0)}; }
 
@@ -130,9 +149,10 @@ struct RestitutionDamping {
         const Real d = hertzDampingRatio(e, clip);
         const Real reached = hertzRestitution(d, clip);
         if (reached > e + 1e-3)
-            p.fail("e", fmt::format("e = {:.4g} is below the smallest restitution this Hertz law reaches ({:.4g}{}); "
-                                    "allowed [{:.4g}, 1]",
-                                    e, reached, clip ? ", clipped" : "", reached));
+            p.fail("e", fmt::format(
+                            "e = {:.4g} is below the smallest restitution this Hertz law reaches ({:.4g}{}); "
+                            "allowed [{:.4g}, 1]",
+                            e, reached, clip ? ", clipped" : "", reached));
         return {d};
     }
 
@@ -147,21 +167,25 @@ struct RestitutionDamping {
 struct LehrDamping {
     static constexpr LawAxis kAxis = LawAxis::Damping;
     static constexpr const char* kKeyword = "lehr";
-    static constexpr const char* kDoc = "Lehr damping ratio: c_n = 2 D_n sqrt(meff k_n(delta)) (Uphoff Eq. 3.44)";
+    static constexpr const char* kDoc =
+        "Lehr damping ratio: c_n = 2 D_n sqrt(meff k_n(delta)) (Uphoff Eq. 3.44)";
     static std::vector<LawParamSpec> params() {
         return {lawParam("D_n", "-", 0, kUnbounded, false, "required", "normal damping ratio (0 elastic)")};
     }
     static LehrDamping make(const LawParams& p) { return {p.require("D_n")}; }
 
     Real ratio = 0;
-    Real coefficient(Real meff, Real stiffness) const noexcept { return 2.0 * ratio * std::sqrt(meff * stiffness); }
+    Real coefficient(Real meff, Real stiffness) const noexcept {
+        return 2.0 * ratio * std::sqrt(meff * stiffness);
+    }
 };
 
 /// LAMMPS gran/hooke/history convention: c = meff * gamma_n, gamma_n [1/s].
 struct MassScaledDamping {
     static constexpr LawAxis kAxis = LawAxis::Damping;
     static constexpr const char* kKeyword = "lammps";
-    static constexpr const char* kDoc = "mass-scaled damping F = meff * gamma_n * v_n (LAMMPS gran/hooke/history)";
+    static constexpr const char* kDoc =
+        "mass-scaled damping F = meff * gamma_n * v_n (LAMMPS gran/hooke/history)";
     static std::vector<LawParamSpec> params() {
         return {lawParam("gamma_n", "1/s", 0, kUnbounded, false, "required", "normal damping rate")};
     }
@@ -178,9 +202,11 @@ struct AreaDamping {
     static constexpr LawAxis kAxis = LawAxis::Damping;
     static constexpr const char* kKeyword = "gamma";
     static constexpr const char* kDoc =
-        "gc2d damping gamma sqrt(E m_perp) dA/(l dt), clipped so the contact never attracts (normal = \"area\")";
+        "gc2d damping gamma sqrt(E m_perp) dA/(l dt), clipped so the contact never attracts (normal = "
+        "\"area\")";
     static std::vector<LawParamSpec> params() {
-        return {lawParam("gamma", "-", 0, kUnbounded, false, "required", "damping factor (gc2d default 0.5; 0 elastic)")};
+        return {lawParam("gamma", "-", 0, kUnbounded, false, "required",
+                         "damping factor (gc2d default 0.5; 0 elastic)")};
     }
     static AreaDamping make(const LawParams& p) { return {p.require("gamma")}; }
 
@@ -200,7 +226,9 @@ struct NoFriction {
     static std::vector<LawParamSpec> params() { return {}; }
     static NoFriction make(const LawParams&) { return {}; }
 
-    Real force(const ContactKinematics&, Real /*kn*/, Real /*fn*/, Real& /*ioXi*/) const noexcept { return 0; }
+    Real force(const ContactKinematics&, Real /*kn*/, Real /*fn*/, Real& /*ioXi*/) const noexcept {
+        return 0;
+    }
     Real energy(Real, Real, Real, Real) const noexcept { return 0; }
 };
 
@@ -214,7 +242,8 @@ inline Real springEnergy(Real k, Real xi, Real cap) noexcept {
 /// Coulomb cap shared by the tangential springs: |F_t| <= mu |F_n|. When the trial force exceeds
 /// the cap, the force is scaled onto it and, if `resetSpring`, the spring xi is reset so that
 /// kt xi + ct vt gives exactly the capped force (Cundall's fix, LAMMPS convention).
-inline Real coulombCap(Real trial, Real fn, Real mu, Real kt, Real ct, Real vt, bool resetSpring, Real& ioXi) noexcept {
+inline Real coulombCap(Real trial, Real fn, Real mu, Real kt, Real ct, Real vt, bool resetSpring,
+                       Real& ioXi) noexcept {
     const Real cap = mu * std::abs(fn);
     const Real mag = std::abs(trial);
     if (mag <= cap) return trial;
@@ -231,20 +260,23 @@ inline Real coulombCap(Real trial, Real fn, Real mu, Real kt, Real ct, Real vt, 
 struct CundallStrack {
     static constexpr LawAxis kAxis = LawAxis::Tangential;
     static constexpr const char* kKeyword = "cundall_strack";
-    static constexpr const char* kDoc = "tangential spring with history, viscous term and Coulomb cap mu * |F_n|";
+    static constexpr const char* kDoc =
+        "tangential spring with history, viscous term and Coulomb cap mu * |F_n|";
     static std::vector<LawParamSpec> params() {
-        return {lawParam("mu", "-", 0, kUnbounded, false, "required", "friction coefficient"),
-                lawParam("kt", "N/m", 0, kUnbounded, false, "2/7 kn", "tangential stiffness"),
-                lawParam("ct", "N s/m", 0, kUnbounded, false, "0", "constant tangential damping"),
-                lawParam("gamma_t", "1/s", 0, kUnbounded, false, "gamma_n/2 with damping = \"lammps\", else 0",
-                         "mass-scaled tangential damping (c_t += meff * gamma_t)")};
+        return {
+            lawParam("mu", "-", 0, kUnbounded, false, "required", "friction coefficient"),
+            lawParam("kt", "N/m", 0, kUnbounded, false, "2/7 kn", "tangential stiffness"),
+            lawParam("ct", "N s/m", 0, kUnbounded, false, "0", "constant tangential damping"),
+            lawParam("gamma_t", "1/s", 0, kUnbounded, false, "gamma_n/2 with damping = \"lammps\", else 0",
+                     "mass-scaled tangential damping (c_t += meff * gamma_t)")};
     }
     static CundallStrack make(const LawParams& p) {
         CundallStrack cs;
         cs.mu = p.require("mu");
         cs.kt = p.getOr("kt", 2.0 / 7.0 * p.getOr("kn", 0.0));
         cs.ct = p.getOr("ct", 0.0);
-        cs.gammaT = p.getOr("gamma_t", p.uses(MassScaledDamping::kKeyword) ? 0.5 * p.getOr("gamma_n", 0.0) : 0.0);
+        cs.gammaT =
+            p.getOr("gamma_t", p.uses(MassScaledDamping::kKeyword) ? 0.5 * p.getOr("gamma_n", 0.0) : 0.0);
         return cs;
     }
 
@@ -272,14 +304,18 @@ struct CundallStrack {
 struct MindlinTangential {
     static constexpr LawAxis kAxis = LawAxis::Tangential;
     static constexpr const char* kKeyword = "mindlin";
+    static constexpr bool kUsesReff = true;
     static constexpr const char* kDoc =
-        "Mindlin spring k_t = 8 G* sqrt(R_eff delta), damper 2 D_t sqrt(meff k_n), Coulomb cap (Uphoff Eq. 3.47-3.55)";
+        "Mindlin spring k_t = 8 G* sqrt(R_eff delta), damper 2 D_t sqrt(meff k_n), Coulomb cap (Uphoff Eq. "
+        "3.47-3.55)";
     static std::vector<LawParamSpec> params() {
-        LawParamSpec literal = lawParam("literal", "-", 0, 1, false, "false",
-                                        "k_t = 8 G* sqrt(R_eff) delta as printed in the seed (dimensionally odd)");
+        LawParamSpec literal =
+            lawParam("literal", "-", 0, 1, false, "false",
+                     "k_t = 8 G* sqrt(R_eff) delta as printed in the seed (dimensionally odd)");
         literal.isBool = true;
-        LawParamSpec reset = lawParam("reset_spring", "-", 0, 1, false, "false",
-                                      "when sliding, reset the spring to the capped force (the seed caps the force only)");
+        LawParamSpec reset =
+            lawParam("reset_spring", "-", 0, 1, false, "false",
+                     "when sliding, reset the spring to the capped force (the seed caps the force only)");
         reset.isBool = true;
         return {lawParam("mu", "-", 0, kUnbounded, false, "required", "friction coefficient"),
                 lawParam("D_t", "-", 0, kUnbounded, false, "0", "tangential damping ratio"), literal, reset};
@@ -287,7 +323,8 @@ struct MindlinTangential {
     static MindlinTangential make(const LawParams& p) {
         MindlinTangential m;
         const auto& mat = p.materials();
-        const Real nuEff = (mat.poissonA > 0 && mat.poissonB > 0) ? 1.0 / (1.0 / mat.poissonA + 1.0 / mat.poissonB) : 0.0;
+        const Real nuEff =
+            (mat.poissonA > 0 && mat.poissonB > 0) ? 1.0 / (1.0 / mat.poissonA + 1.0 / mat.poissonB) : 0.0;
         m.eightG = 8.0 * p.effectiveModulus() / (2.0 * (1.0 + nuEff));
         m.ratio = p.getOr("D_t", 0.0);
         m.mu = p.require("mu");
@@ -326,18 +363,24 @@ struct AreaFriction {
     static constexpr LawAxis kAxis = LawAxis::Tangential;
     static constexpr const char* kKeyword = "gc2d";
     static constexpr const char* kDoc =
-        "gc2d Cundall-Strack spring k_t (2/7 E) + sqrt(k_t m_par) v_par, capped at mu F_n, spring clipped (normal = \"area\")";
+        "gc2d Cundall-Strack spring k_t (2/7 E) + sqrt(k_t m_par) v_par, capped at mu F_n, spring clipped "
+        "(normal = \"area\")";
     static std::vector<LawParamSpec> params() {
-        LawParamSpec damped = lawParam("damped", "-", 0, 1, false, "true", "viscous term sqrt(k_t m_par) v_par (gc2d Eq. 2.26)");
+        LawParamSpec damped = lawParam("damped", "-", 0, 1, false, "true",
+                                       "viscous term sqrt(k_t m_par) v_par (gc2d Eq. 2.26)");
         damped.isBool = true;
-        LawParamSpec rab = lawParam("rabinowicz", "-", 0, 1, false, "false",
-                                    "velocity-weakening cap mu (|v_par| / 1 m/s)^(-1/10) F_n (gc2d Eq. 2.25)");
+        LawParamSpec rab =
+            lawParam("rabinowicz", "-", 0, 1, false, "false",
+                     "velocity-weakening cap mu (|v_par| / 1 m/s)^(-1/10) F_n (gc2d Eq. 2.25)");
         rab.isBool = true;
-        LawParamSpec total = lawParam("cap_total", "-", 0, 1, false, "false",
-                                      "cap with the total normal force (elastic + damping - cohesion), not the elastic one");
+        LawParamSpec total =
+            lawParam("cap_total", "-", 0, 1, false, "false",
+                     "cap with the total normal force (elastic + damping - cohesion), not the elastic one");
         total.isBool = true;
-        return {lawParam("mu", "-", 0, kUnbounded, false, "required", "friction coefficient (gc2d default 0.6)"),
-                lawParam("kt", "N/m", 0, kUnbounded, false, "2/7 E", "tangential spring stiffness"), damped, rab, total};
+        return {
+            lawParam("mu", "-", 0, kUnbounded, false, "required", "friction coefficient (gc2d default 0.6)"),
+            lawParam("kt", "N/m", 0, kUnbounded, false, "2/7 E", "tangential spring stiffness"), damped, rab,
+            total};
     }
     static AreaFriction make(const LawParams& p) {
         AreaFriction f;
@@ -359,9 +402,9 @@ struct AreaFriction {
 using TangentialLaw = std::variant<NoFriction, CundallStrack, MindlinTangential, AreaFriction>;
 
 // ---------------------------------------------------------------- rolling resistance
-// Not part of the compile-time form of a law: the pair loop is compiled with and without rolling
-// (dem/forces.cpp), and each material pair switches it on at run time, so rolling resistance does
-// not multiply the kernels by the number of rolling laws.
+// Not part of the compile-time form of a law: the disk-disk loop is compiled with and without
+// rolling (dem/forces_depth.hpp), and each material pair switches it on at run time, so rolling
+// resistance does not multiply the kernels by the number of rolling laws.
 
 /// No rolling resistance.
 struct NoRolling {
@@ -381,12 +424,16 @@ struct SpringDashpotRolling {
     static constexpr LawAxis kAxis = LawAxis::Rolling;
     static constexpr const char* kKeyword = "spring_dashpot";
     static constexpr const char* kDoc =
-        "rolling spring k_r [N] on the rolling displacement and damper c_r = 2 D_r sqrt(meff k_n) R_eff (Uphoff Eq. 3.56-3.59)";
+        "rolling spring k_r [N] on the rolling displacement and damper c_r = 2 D_r sqrt(meff k_n) R_eff "
+        "(Uphoff Eq. 3.56-3.59)";
     static std::vector<LawParamSpec> params() {
-        return {lawParam("k_r", "N", 0, kUnbounded, false, "0", "rolling stiffness (torque per rolling displacement)"),
+        return {lawParam("k_r", "N", 0, kUnbounded, false, "0",
+                         "rolling stiffness (torque per rolling displacement)"),
                 lawParam("D_r", "-", 0, kUnbounded, false, "0", "rolling damping ratio")};
     }
-    static SpringDashpotRolling make(const LawParams& p) { return {p.getOr("k_r", 0.0), p.getOr("D_r", 0.0)}; }
+    static SpringDashpotRolling make(const LawParams& p) {
+        return {p.getOr("k_r", 0.0), p.getOr("D_r", 0.0)};
+    }
 
     Real kr = 0;     ///< [N]
     Real ratio = 0;  ///< D_r

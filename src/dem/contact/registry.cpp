@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: MIT
-// Contact-law registry: generic machinery over the axis variants of laws.hpp (adding a law does
-// not touch this file).
+// Contact-law registry: generic machinery over the four axis variants of laws.hpp (adding an
+// overlap-depth law does not touch this file; the pairing rule of the gc2d area family in
+// buildContactLaw names the area laws).
 #include "dem/contact/registry.hpp"
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "core/suggest.hpp"
 
@@ -22,8 +24,9 @@ namespace {
 
 template <class Variant, std::size_t... I>
 void appendEntries(std::vector<LawEntry>& out, std::index_sequence<I...>) {
-    (out.push_back({std::variant_alternative_t<I, Variant>::kAxis, std::variant_alternative_t<I, Variant>::kKeyword,
-                    std::variant_alternative_t<I, Variant>::kDoc, std::variant_alternative_t<I, Variant>::params()}),
+    (out.push_back(
+         {std::variant_alternative_t<I, Variant>::kAxis, std::variant_alternative_t<I, Variant>::kKeyword,
+          std::variant_alternative_t<I, Variant>::kDoc, std::variant_alternative_t<I, Variant>::params()}),
      ...);
 }
 
@@ -80,10 +83,14 @@ std::vector<std::string> lawKeywords(LawAxis axis) {
 
 const char* axisKey(LawAxis axis) noexcept {
     switch (axis) {
-        case LawAxis::Normal: return "normal";
-        case LawAxis::Damping: return "damping";
-        case LawAxis::Tangential: return "tangential";
-        case LawAxis::Rolling: return "rolling";
+        case LawAxis::Normal:
+            return "normal";
+        case LawAxis::Damping:
+            return "damping";
+        case LawAxis::Tangential:
+            return "tangential";
+        case LawAxis::Rolling:
+            return "rolling";
     }
     return "";
 }
@@ -120,40 +127,49 @@ ContactLaw buildContactLaw(const model::ContactDef& def, const std::string& ctx,
         if (!spec) {
             if (allKnown)
                 diags.error(value.loc, ctx + "." + key,
-                            fmt::format("key not used by laws {}/{}/{}/{}{}; allowed here: {}", def.normal, def.damping,
-                                        def.tangential, def.rolling, didYouMean(key, allowedNames), joinList(allowedNames)));
+                            fmt::format("key not used by laws {}/{}/{}/{}{}; allowed here: {}", def.normal,
+                                        def.damping, def.tangential, def.rolling,
+                                        didYouMean(key, allowedNames), joinList(allowedNames)));
             continue;
         }
         if (spec->isBool != value.isBool) {
             diags.error(value.loc, ctx + "." + key,
-                        fmt::format("{} expects {}", key, spec->isBool ? "true or false" : "a number [" + spec->unit + "]"));
+                        fmt::format("{} expects {}", key,
+                                    spec->isBool ? "true or false" : "a number [" + spec->unit + "]"));
             continue;
         }
         const Real v = value.value;
         const bool below = spec->minExclusive ? !(v > spec->min) : !(v >= spec->min);
         if (!std::isfinite(v) || below || v > spec->max)
             diags.error(value.loc, ctx + "." + key,
-                        fmt::format("{} = {} is out of range; allowed {} [{}]", key, v, spec->rangeText(), spec->unit));
+                        fmt::format("{} = {} is out of range; allowed {} [{}]", key, v, spec->rangeText(),
+                                    spec->unit));
     }
 
     // The gc2d area family (normal "area", damping "gamma", tangential "gc2d") has its own kernel
     // and is not combined with the overlap-depth laws.
     if (allKnown) {
         const bool area = def.normal == AreaNormal::kKeyword;
-        const bool dampingOk = area ? (def.damping == NoDamping::kKeyword || def.damping == AreaDamping::kKeyword)
-                                    : def.damping != AreaDamping::kKeyword;
-        const bool tangentialOk = area ? (def.tangential == NoFriction::kKeyword || def.tangential == AreaFriction::kKeyword)
-                                       : def.tangential != AreaFriction::kKeyword;
+        const bool dampingOk =
+            area ? (def.damping == NoDamping::kKeyword || def.damping == AreaDamping::kKeyword)
+                 : def.damping != AreaDamping::kKeyword;
+        const bool tangentialOk =
+            area ? (def.tangential == NoFriction::kKeyword || def.tangential == AreaFriction::kKeyword)
+                 : def.tangential != AreaFriction::kKeyword;
         if (!dampingOk)
             diags.error(def.loc, ctx + ".damping",
-                        area ? fmt::format("normal = \"area\" takes damping \"none\" or \"gamma\", got '{}'", def.damping)
+                        area ? fmt::format("normal = \"area\" takes damping \"none\" or \"gamma\", got '{}'",
+                                           def.damping)
                              : "damping = \"gamma\" belongs to normal = \"area\" (gc2d overlap-area law)");
         if (!tangentialOk)
             diags.error(def.loc, ctx + ".tangential",
-                        area ? fmt::format("normal = \"area\" takes tangential \"none\" or \"gc2d\", got '{}'", def.tangential)
-                             : "tangential = \"gc2d\" belongs to normal = \"area\" (gc2d overlap-area law)");
+                        area
+                            ? fmt::format("normal = \"area\" takes tangential \"none\" or \"gc2d\", got '{}'",
+                                          def.tangential)
+                            : "tangential = \"gc2d\" belongs to normal = \"area\" (gc2d overlap-area law)");
         if (area && def.rolling != NoRolling::kKeyword)
-            diags.error(def.loc, ctx + ".rolling", "normal = \"area\" has no rolling resistance law (polygons roll on their corners)");
+            diags.error(def.loc, ctx + ".rolling",
+                        "normal = \"area\" has no rolling resistance law (polygons roll on their corners)");
     }
 
     ContactLaw law;
@@ -174,10 +190,11 @@ ContactLaw buildContactLaw(const model::ContactDef& def, const std::string& ctx,
     for (const auto& name : params.materialsMissingModulus()) {
         if (std::find(seen.begin(), seen.end(), name) != seen.end()) continue;
         seen.push_back(name);
-        diags.error(def.loc, ctx,
-                    fmt::format("laws {}/{}/{} need the elastic constants of material '{}': set its youngs_modulus "
-                                "[Pa] in (0, inf) and poisson in [0, 0.5)",
-                                def.normal, def.damping, def.tangential, name));
+        diags.error(
+            def.loc, ctx,
+            fmt::format("laws {}/{}/{} need the elastic constants of material '{}': set its youngs_modulus "
+                        "[Pa] in (0, inf) and poisson in [0, 0.5)",
+                        def.normal, def.damping, def.tangential, name));
     }
     return law;
 }

@@ -20,18 +20,18 @@ struct LawEntry {
     std::vector<LawParamSpec> params;
 };
 
-/// All registered alternatives, in variant order (normal, damping, tangential).
+/// All registered alternatives, in variant order (normal, damping, tangential, rolling).
 const std::vector<LawEntry>& lawRegistry();
 /// Parameters valid for every law (e.g. clip_attraction).
 const std::vector<LawParamSpec>& commonLawParams();
 /// Keywords of one axis.
 std::vector<std::string> lawKeywords(LawAxis axis);
-/// "normal", "damping" or "tangential" (the [[contact]] key that selects the axis law).
+/// "normal", "damping", "tangential" or "rolling" (the [[contact]] key that selects the axis law).
 const char* axisKey(LawAxis axis) noexcept;
 
 /// Builds the law of one material pair; every problem goes to `diags` (the result is then
 /// unusable but the scan continues so that all errors are reported together).
-ContactLaw buildContactLaw(const model::ContactDef& def, const std::string& contextKey,
-                           Diagnostics& diags, const PairMaterials& materials);
+ContactLaw buildContactLaw(const model::ContactDef& def, const std::string& contextKey, Diagnostics& diags,
+                           const PairMaterials& materials);
 
 }  // namespace granulab::dem

@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: MIT
+// Elastic energy stored in the contacts, for the energy balance (no side effects): the springs of
+// the depth laws (cfddem spec section 3) and, for the gc2d area law (gc2d spec section 3.2), the
+// estimate F_n h_eff / 2 plus the tangential spring.
+#include <cmath>
+#include <type_traits>
+
+#include "dem/contact/kernel.hpp"
+#include "dem/forces.hpp"
+#include "dem/forces_area.hpp"
+#include "dem/forces_detail.hpp"
+#include "geom/segment.hpp"
+
+namespace granulab::dem {
+
+namespace {
+
+using detail::kAreaForm;
+using detail::kDepthForm;
+
+/// Energy of the area contacts of one bucket: F_n h_eff / 2 + k_t xi^2 / 2.
+template <class T>
+Real areaEnergy(const model::ParticleStore& s, const model::WallSet& walls, const ContactList& cl,
+                std::uint32_t b, std::uint32_t e, const LawTable& laws, bool wall, ShapeContext& sc) {
+    Real energy = 0;
+    const std::uint32_t nm = laws.materialCount();
+    for (std::uint32_t p = b; p < e; ++p) {
+        const std::uint32_t i = cl.first[p];
+        geom::FeatureCache cache = cl.features[p];  // a copy: energies do not disturb the tracking
+        geom::AreaContact g;
+        std::uint32_t otherMat;
+        Real l;
+        if (wall) {
+            const auto& seg = walls.segments[cl.second[p]];
+            g = area::wallGeometry(s, sc, i, seg.a, seg.b, cache);
+            otherMat = seg.material;
+            l = norm(g.point - Vec2{s.x[i], s.y[i]});
+        } else {
+            const std::uint32_t j = cl.second[p];
+            g = area::pairGeometry(s, sc, i, j, cache);
+            otherMat = s.material[j];
+            const Real ri = norm(g.point - Vec2{s.x[i], s.y[i]}), rj = norm(g.point - Vec2{s.x[j], s.y[j]});
+            l = ri + rj > 0 ? ri * rj / (ri + rj) : 0;
+        }
+        if (!g.touching || !(l > 0)) continue;
+        const ContactLaw& law = laws.laws()[static_cast<std::size_t>(s.material[i]) * nm + otherMat];
+        const AreaNormal& nl = *std::get_if<AreaNormal>(&law.normal);
+        const Real h = g.area / l;
+        energy += 0.5 * nl.E * h * h;
+        if constexpr (std::is_same_v<T, AreaFriction>) {
+            const Real kt = std::get_if<AreaFriction>(&law.tangential)->kt;
+            energy += 0.5 * kt * cl.xi[p] * cl.xi[p];
+        }
+    }
+    return energy;
+}
+}  // namespace
+
+Real contactEnergy(const model::ParticleStore& s, const model::WallSet& walls, const NeighborList& list,
+                   const LawTable& laws, const model::ShapePool& shapes) {
+    Real energy = 0;
+    const std::uint32_t nm = laws.materialCount();
+    ShapeContext sc;  // own world corners and statistics: energies do not disturb the step
+    sc.pool = &shapes;
+    sc.anyPolygon = shapes.size() > 0;
+    sc.update(s);
+    const auto eval = [&](const ContactList& cl, bool wall) {
+        detail::forEachBucket(cl, laws, [&](auto* nT, auto* dT, auto* tT, std::uint32_t b, std::uint32_t e) {
+            using N = std::remove_pointer_t<decltype(nT)>;
+            using D = std::remove_pointer_t<decltype(dT)>;
+            using T = std::remove_pointer_t<decltype(tT)>;
+            if constexpr (kAreaForm<N, D, T>) {
+                energy += areaEnergy<T>(s, walls, cl, b, e, laws, wall, sc);
+            } else if constexpr (kDepthForm<N, D, T>) {
+                for (std::uint32_t p = b; p < e; ++p) {
+                    const std::uint32_t i = cl.first[p];
+                    Real overlap, reff;
+                    std::uint32_t otherMat;
+                    if (wall) {
+                        const auto& seg = walls.segments[cl.second[p]];
+                        const auto g =
+                            geom::diskSegmentContact({s.x[i], s.y[i]}, s.radius[i], seg.a, seg.b,
+                                                     seg.startShared, seg.endShared, seg.prevDirection);
+                        overlap = g.touching ? g.overlap : 0;
+                        reff = s.radius[i];
+                        otherMat = seg.material;
+                    } else {
+                        const std::uint32_t j = cl.second[p];
+                        const Real dx = s.x[j] - s.x[i], dy = s.y[j] - s.y[i];
+                        overlap = s.radius[i] + s.radius[j] - std::sqrt(dx * dx + dy * dy);
+                        reff = s.radius[i] * s.radius[j] / (s.radius[i] + s.radius[j]);
+                        otherMat = s.material[j];
+                    }
+                    if (overlap <= 0) continue;
+                    const auto law = detail::resolve<N, D, T>(
+                        laws.laws()[static_cast<std::size_t>(s.material[i]) * nm + otherMat]);
+                    energy +=
+                        dem::contactEnergy(law, overlap, reff, cl.xi[p], cl.zeta.empty() ? 0.0 : cl.zeta[p]);
+                }
+            }
+        });
+    };
+    eval(list.pairs, false);
+    eval(list.wallPairs, true);
+    return energy;
+}
+
+}  // namespace granulab::dem

@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: MIT
+// Helpers shared by the force kernels and the contact energy (internal to dem/): the one dispatch
+// per bucket of pairs (std::visit over the law form, DESIGN.md "Contact laws"), the resolved law
+// of a material pair, the form traits and the contact-point velocities. Included by .cpp files of
+// dem/ only.
+#pragma once
+#include <cstdint>
+#include <type_traits>
+#include <variant>
+
+#include "core/error.hpp"
+#include "dem/contact/kernel.hpp"
+#include "dem/forces.hpp"
+
+namespace granulab::dem::detail {
+// Internal linkage (an unnamed namespace), as when these functions lived in one .cpp: GCC inlines
+// a kernel called once only where no other translation unit can call it.
+namespace {
+
+/// The law of one material pair with the alternatives of its bucket's form known at compile time.
+template <class N, class D, class T>
+ResolvedLaw<N, D, T> resolve(const ContactLaw& law) noexcept {
+    return {*std::get_if<N>(&law.normal), *std::get_if<D>(&law.damping), *std::get_if<T>(&law.tangential),
+            law.clipAttraction, rollingSettings(law.rolling)};
+}
+
+/// Visits the form of a bucket with its concrete axis types.
+template <class Fn>
+void visitForm(const ContactLaw& rep, Fn&& fn) {
+    std::visit(
+        [&](const auto& n, const auto& d, const auto& t) {
+            using N = std::decay_t<decltype(n)>;
+            using D = std::decay_t<decltype(d)>;
+            using T = std::decay_t<decltype(t)>;
+            fn(static_cast<N*>(nullptr), static_cast<D*>(nullptr), static_cast<T*>(nullptr));
+        },
+        rep.normal, rep.damping, rep.tangential);
+}
+
+/// Calls fn(N*, D*, T*, begin, end) for every non-empty bucket of `list` with the concrete axis
+/// types of the bucket's law form: the one dispatch per bucket.
+template <class Fn>
+void forEachBucket(const ContactList& list, const LawTable& laws, Fn&& fn) {
+    GL_ASSERT(list.bucketStart.empty() || list.bucketStart.size() == laws.formCount() + std::size_t{1},
+              "one bucket per law form");
+    GL_ASSERT(list.bucketStart.empty() || list.bucketStart.back() == list.size(), "buckets cover the list");
+    for (std::uint32_t f = 0; f + 1 < list.bucketStart.size(); ++f) {
+        const auto b = list.bucketStart[f], e = list.bucketStart[f + 1];
+        if (b == e) continue;
+        GL_ASSERT(b < e, "bucket offsets ascending");
+        visitForm(laws.formRepresentative(f), [&](auto* nT, auto* dT, auto* tT) { fn(nT, dT, tT, b, e); });
+    }
+}
+
+template <class D>
+constexpr bool kAreaDamping = std::is_same_v<D, NoDamping> || std::is_same_v<D, AreaDamping>;
+template <class T>
+constexpr bool kAreaTangential = std::is_same_v<T, NoFriction> || std::is_same_v<T, AreaFriction>;
+/// True for the law forms of the overlap-depth kernels (disks only).
+template <class N, class D, class T>
+constexpr bool kDepthForm =
+    !std::is_same_v<N, AreaNormal> && !std::is_same_v<D, AreaDamping> && !std::is_same_v<T, AreaFriction>;
+/// True for the forms of the gc2d area kernel (validation rejects mixed forms).
+template <class N, class D, class T>
+constexpr bool kAreaForm = std::is_same_v<N, AreaNormal>&& kAreaDamping<D>&& kAreaTangential<T>;
+
+/// Tangential displacement [m] of the contact points of the disks i and j during the step, from
+/// the drift velocities; n points from i to j.
+inline Real tangentialIncrement(const DriftVelocities& d, std::uint32_t i, std::uint32_t j, Real ri, Real rj,
+                                Real nx, Real ny, Real dt) noexcept {
+    const Real wsum = d.omega[i] * ri + d.omega[j] * rj;
+    const Real vrx = d.vx[i] - d.vx[j] - wsum * ny;
+    const Real vry = d.vy[i] - d.vy[j] + wsum * nx;
+    return (-vrx * ny + vry * nx) * dt;
+}
+
+/// Velocity of the material point of slot i at lever arm r, v + omega z x r (actual or drift
+/// velocities, whichever columns are passed) [m/s].
+inline Vec2 pointVelocity(const Real* vx, const Real* vy, const Real* om, std::uint32_t i, Vec2 r) noexcept {
+    return Vec2{vx[i], vy[i]} + perp(r) * om[i];
+}
+
+}  // namespace
+}  // namespace granulab::dem::detail
