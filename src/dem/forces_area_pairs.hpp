@@ -17,6 +17,16 @@ namespace granulab::dem::detail {
 // a kernel called once only where no other translation unit can call it.
 namespace {
 
+/// Debug checks of an area-law bucket [begin, end) of `list` (compiled out in Release).
+inline void assertAreaBucket([[maybe_unused]] const ContactList& list, [[maybe_unused]] std::uint32_t begin,
+                             [[maybe_unused]] std::uint32_t end, [[maybe_unused]] bool trialHistory) noexcept {
+    GL_ASSERT(begin <= end && end <= list.size() && list.features.size() == list.size(),
+              "bucket inside the list, one feature cache per pair");
+    GL_ASSERT((trialHistory ? list.areaOldTrial : list.areaOld).size() == list.size(),
+              "area history allocated");
+    GL_ASSERT(!trialHistory || list.xiTrial.size() == list.size(), "trial springs allocated");
+}
+
 /// gc2d area contacts of one bucket of particle pairs (any shapes).
 template <class D, class T>
 void areaPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, std::uint32_t end,
@@ -26,11 +36,7 @@ void areaPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
     const ContactLaw* table = laws.laws().data();
     Real* xiHist = trialHistory ? list.xiTrial.data() : list.xi.data();
     Real* areaHist = trialHistory ? list.areaOldTrial.data() : list.areaOld.data();
-    GL_ASSERT(begin <= end && end <= list.size() && list.features.size() == list.size(),
-              "bucket inside the list, one feature cache per pair");
-    GL_ASSERT((trialHistory ? list.areaOldTrial : list.areaOld).size() == list.size(),
-              "area history allocated");
-    GL_ASSERT(!trialHistory || list.xiTrial.size() == list.size(), "trial springs allocated");
+    assertAreaBucket(list, begin, end, trialHistory);
     std::uint64_t contacts = 0;
     Real maxRel = stats.maxRelativeOverlap;
     const Real invDt = 1.0 / dt;
@@ -116,11 +122,7 @@ void areaWalls(model::ParticleStore& s, const model::WallSet& walls, ContactList
     const ContactLaw* table = laws.laws().data();
     Real* xiHist = trialHistory ? list.xiTrial.data() : list.xi.data();
     Real* areaHist = trialHistory ? list.areaOldTrial.data() : list.areaOld.data();
-    GL_ASSERT(begin <= end && end <= list.size() && list.features.size() == list.size(),
-              "bucket inside the list, one feature cache per pair");
-    GL_ASSERT((trialHistory ? list.areaOldTrial : list.areaOld).size() == list.size(),
-              "area history allocated");
-    GL_ASSERT(!trialHistory || list.xiTrial.size() == list.size(), "trial springs allocated");
+    assertAreaBucket(list, begin, end, trialHistory);
     GL_ASSERT(wallForce.size() == walls.walls.size(), "one force per wall");
     std::uint64_t contacts = 0;
     for (std::uint32_t p = begin; p < end; ++p) {

@@ -176,13 +176,7 @@ void readList(std::istream& is, ContactList& l) {
 void World::saveState(std::ostream& os) const {
     writePod(os, kStateMagic);
     writePod<std::int64_t>(os, m_step);
-    const auto& s = m_store;
-    for (const auto* col : {&s.x, &s.y, &s.vx, &s.vy, &s.angle, &s.omega, &s.fx, &s.fy, &s.torque, &s.radius,
-                            &s.mass, &s.invMass, &s.invInertia})
-        writeVector(os, *col);
-    writeVector(os, s.material);
-    writeVector(os, s.id);
-    writeVector(os, s.shape);
+    m_store.save(os);
     writeList(os, m_list.pairs);
     writeList(os, m_list.wallPairs);
     writeVector(os, m_list.x0);
@@ -196,13 +190,8 @@ void World::saveState(std::ostream& os) const {
 void World::loadState(std::istream& is) {
     if (readPod<std::uint64_t>(is) != kStateMagic) throw std::runtime_error("not a granulab DEM checkpoint");
     m_step = readPod<std::int64_t>(is);
-    auto& s = m_store;
-    for (auto* col : {&s.x, &s.y, &s.vx, &s.vy, &s.angle, &s.omega, &s.fx, &s.fy, &s.torque, &s.radius, &s.mass,
-                      &s.invMass, &s.invInertia})
-        readVector(is, *col);
-    readVector(is, s.material);
-    readVector(is, s.id);
-    readVector(is, s.shape);
+    m_store.load(is);
+    const auto& s = m_store;
     for (auto& sp : m_config.springs)  // slots of the restored (possibly re-sorted) store
         for (std::uint32_t k = 0; k < s.size(); ++k)
             if (s.id[k] == sp.id) sp.slot = k;
