@@ -39,6 +39,39 @@ using Vec3 = VecD<3>;
 
 inline constexpr Real kNoEvent = std::numeric_limits<Real>::infinity();
 
+/// Free flight over dt [s] (edmd spec 2.5.1, Eq. 2.2-2.4): the position [m] of a particle at x
+/// with velocity v [m/s] after dt, on a straight line.
+[[gnu::always_inline]] inline Real flightPosition(Real x, Real v, Real dt) noexcept {
+    return x + v * dt;
+}
+
+/// Same under uniform gravity g [m/s^2] (a parabola): x + v dt + g dt^2/2, evaluated in exactly
+/// this order, (x + v dt) + ((g/2) dt) dt; the engine's checkpoints and regression runs depend on
+/// the rounding, so keep the expression as it is.
+[[gnu::always_inline]] inline Real flightPosition(Real x, Real v, Real g, Real dt) noexcept {
+    return x + v * dt + 0.5 * g * dt * dt;
+}
+
+/// Velocity [m/s] after a free flight of dt [s] under gravity g [m/s^2]: v + g dt.
+[[gnu::always_inline]] inline Real flightVelocity(Real v, Real g, Real dt) noexcept {
+    return v + g * dt;
+}
+
+/// The free flight of a whole particle over dt [s], componentwise as above: x [m] and v [m/s]
+/// are replaced by their values after dt. Without Gravity (g ignored) the velocity is unchanged
+/// and the position moves on a straight line.
+template <bool Gravity, int D>
+[[gnu::always_inline]] inline void freeFlight(VecD<D>& x, VecD<D>& v, const VecD<D>& g, Real dt) noexcept {
+    for (int k = 0; k < D; ++k) {
+        if constexpr (Gravity) {
+            x[k] = flightPosition(x[k], v[k], g[k], dt);
+            v[k] = flightVelocity(v[k], g[k], dt);
+        } else {
+            x[k] = flightPosition(x[k], v[k], dt);
+        }
+    }
+}
+
 /// Time until two spheres at relative position r12 = r1 - r2 with relative velocity v12 touch at
 /// contact distance s = a1 + a2 (edmd Eq. 2.18-2.19, robust form of spec 2.8): +inf if they
 /// separate or miss; 0 if they already overlap by round-off while approaching.

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Event times and collision rules of hard disks and spheres (edmd spec sections 2.5 and 2.8):
 // collision times against a brute-force root search, grazing and overlapping cases, growing
-// spheres, parabolic wall passages; collision rules conserve momentum and total (orbital + spin)
-// angular momentum, lose (m/4)(1 - eps^2) v_n^2, and conserve energy for eps = 1, phi = +-1.
+// spheres, parabolic wall passages; free flight in the engine's rounding order; collision rules
+// conserve momentum and total (orbital + spin) angular momentum, lose (m/4)(1 - eps^2) v_n^2,
+// and conserve energy for eps = 1, phi = +-1.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -80,6 +81,51 @@ TEST(EdmdKinematics, GrowingSpheresMeetAtTheSmallestNonNegativeRoot) {
         if (!std::isinf(ref)) EXPECT_NEAR(t, ref, 1e-9) << trial;
         else EXPECT_TRUE(std::isinf(t) || t > 3 || s + us * t <= 0) << trial;
     }
+}
+
+TEST(EdmdKinematics, FreeFlightIsTheLineOrTheParabolaInTheEnginesRoundingOrder) {
+    // Thrown up at 3 m/s under g = -9.81 from 0.5 m: apex at t = 3/9.81, height 0.5 + 9/19.62.
+    const Real tApex = 3 / 9.81;
+    EXPECT_NEAR(flightPosition(0.5, 3.0, -9.81, tApex), 0.5 + 9 / 19.62, 1e-14);
+    EXPECT_NEAR(flightVelocity(3.0, -9.81, tApex), 0.0, 1e-14);
+    EXPECT_EQ(flightPosition(0.5, 3.0, 0.0, 2.0), flightPosition(0.5, 3.0, 2.0));
+    EXPECT_EQ(flightPosition(0.5, 3.0, 2.0), 6.5);
+    EXPECT_EQ(flightVelocity(3.0, -9.81, 0.0), 3.0);
+    // The order is part of the contract (bit-identical runs): (x + v dt) + ((g/2) dt) dt.
+    CounterRng rng(8, 0);
+    for (int trial = 0; trial < 1000; ++trial) {
+        const Real x = rng.uniform(-10, 10), v = rng.uniform(-5, 5), g = rng.uniform(-20, 20),
+                   dt = rng.uniform(0, 3);
+        const Real line = x + v * dt;
+        EXPECT_EQ(flightPosition(x, v, dt), line);
+        EXPECT_EQ(flightPosition(x, v, g, dt), line + 0.5 * g * dt * dt);
+        EXPECT_EQ(flightVelocity(v, g, dt), v + g * dt);
+    }
+    // Whole particles: componentwise; two flights make one up to round-off.
+    VecD<3> x{{1, 2, 3}}, v{{0.5, -1, 2}};
+    const VecD<3> g{{0, 0, -9.81}};
+    VecD<3> xl = x, vl = v;
+    freeFlight<false>(xl, vl, g, 0.25);  // g ignored
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_EQ(xl[k], flightPosition(x[k], v[k], 0.25));
+        EXPECT_EQ(vl[k], v[k]);
+    }
+    VecD<3> xp = x, vp = v;
+    freeFlight<true>(xp, vp, g, 0.25);
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_EQ(xp[k], flightPosition(x[k], v[k], g[k], 0.25));
+        EXPECT_EQ(vp[k], flightVelocity(v[k], g[k], 0.25));
+    }
+    freeFlight<true>(xp, vp, g, 0.5);
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_NEAR(xp[k], x[k] + v[k] * 0.75 + 0.5 * g[k] * 0.75 * 0.75, 1e-14);
+        EXPECT_NEAR(vp[k], v[k] + g[k] * 0.75, 1e-14);
+    }
+    VecD<2> x2{{1, 2}}, v2{{3, 4}};
+    freeFlight<true>(x2, v2, VecD<2>{{0, -1}}, 2.0);
+    EXPECT_EQ(x2[0], 7.0);
+    EXPECT_EQ(x2[1], 8.0);
+    EXPECT_EQ(v2[1], 2.0);
 }
 
 TEST(EdmdKinematics, FirstPassageUnderGravity) {
