@@ -132,11 +132,53 @@ private:
     /// Events between two spatial sorts, in units of N (a sort costs about as much as N events).
     static constexpr std::uint64_t kSortEvery = 16;
 
+    /// The particle whose next event is being predicted, brought to the current time.
+    struct Subject {
+        std::uint32_t slot;  ///< its slot
+        V x;                 ///< [m] position now
+        V v;                 ///< [m/s] velocity now
+        Real radius;         ///< [m] radius now
+    };
+    /// The earliest event found so far while predicting (spec 2.8: only the earliest is kept).
+    struct Prediction {
+        Real dt = kNoEvent;  ///< [s] from now
+        Event ev;
+    };
+    /// The neighbour cells of a cell: up to 3 per axis (fewer at a wall), each as its
+    /// contribution to the cell index and the image shift [m] of its particles across a periodic
+    /// boundary (spec 2.4 [I], image shifts).
+    struct Neighbourhood {
+        std::uint32_t offset[3][3] = {};
+        Real shift[3][3] = {};
+        int count[3] = {1, 1, 1};
+    };
+
     std::uint64_t run(Real tEnd, std::uint64_t collisionLimit);
     void advance(std::uint32_t s, Real t) noexcept;
     void schedule(std::uint32_t s) noexcept;
     template <bool Gravity, bool Growing, bool Uniform>
     void scheduleImpl(std::uint32_t s) noexcept;
+    /// Cell-face crossings and plane walls of the subject's cell (edmd Eq. 2.22-2.25).
+    template <bool Gravity>
+    void predictFaces(const Subject& p, const CellCoords& c, Prediction& next) const noexcept;
+    Neighbourhood neighbourhood(const CellCoords& c) const noexcept;
+    /// Collisions with the particles of the neighbour cells (edmd Eq. 2.18-2.21).
+    template <bool Gravity, bool Growing, bool Uniform>
+    void predictPairs(const Subject& p, const Neighbourhood& nb, Prediction& next) const noexcept;
+    /// Collision time [s] of the subject with slot j at relative position r [m] and velocity w
+    /// [m/s]; false when the pair cannot collide before `bound` [s] (fixed radii: a cheap test
+    /// before the square root) or j is the subject (growing radii).
+    template <bool Growing, bool Uniform>
+    bool pairTime(const Subject& p, std::uint32_t j, const V& r, const V& w, Real bound,
+                  Real& dt) const noexcept;
+    /// Stores the predicted event of slot s and queues it at now + dt.
+    void push(std::uint32_t s, const Prediction& next) noexcept;
+    /// Gravity [m/s^2] as a D-vector.
+    V gravityVector() const noexcept {
+        V g;
+        for (int d = 0; d < D; ++d) g[d] = m_config.gravity[d];
+        return g;
+    }
     void collide(std::uint32_t s, std::uint32_t j, Real t) noexcept;
     void collideWall(std::uint32_t s, std::uint32_t wall, Real t) noexcept;
     void crossCell(std::uint32_t s, std::uint32_t face) noexcept;
