@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Event queues (edmd spec section 2.3): addressable binary heap and tournament tree.
+// Event queues (edmd spec section 2.3): addressable binary heap, tournament tree and calendar
+// queue.
 #include "edmd/event_queue.hpp"
 
 #include <algorithm>

@@ -3,7 +3,7 @@
 // particle, keyed by its time; the key of a particle is replaced (never removed) when its event
 // changes, stale events are recognised by the caller when they reach the top. Ties are broken
 // by the smaller particle index, so the event order is deterministic.
-// Two implementations behind one interface (no virtual calls; the engine is a template on the
+// Three implementations behind one interface (no virtual calls; the engine is a template on the
 // queue type):
 //  * AddressableHeap: implicit binary heap with heap_pos[particle] (the thesis' queue).
 //  * TournamentTree: complete binary tree over the N particles (Marin, Risso & Cordero 1993),
