@@ -37,8 +37,12 @@ void readVector(std::istream& is, std::vector<T, A>& v) {
     if (!is) throw std::runtime_error("checkpoint truncated");
 }
 
-Vec3 lift(const VecD<2>& a) noexcept { return {{a[0], a[1], 0}}; }
-Vec3 lift(const VecD<3>& a) noexcept { return a; }
+Vec3 lift(const VecD<2>& a) noexcept {
+    return {{a[0], a[1], 0}};
+}
+Vec3 lift(const VecD<3>& a) noexcept {
+    return a;
+}
 template <int D>
 VecD<D> lower(const Vec3& a) noexcept {
     VecD<D> r;
@@ -59,7 +63,8 @@ Engine<D, Queue>::Engine(EngineConfig config, std::vector<V> x, std::vector<V> v
         if (!(m_config.box[d] > 0)) throw std::invalid_argument("edmd::Engine: box edges must be positive");
     if (m_config.growthRate != 0)
         for (int d = 0; d < D; ++d)
-            if (!m_config.periodic[d]) throw std::invalid_argument("edmd::Engine: growing spheres need a periodic box");
+            if (!m_config.periodic[d])
+                throw std::invalid_argument("edmd::Engine: growing spheres need a periodic box");
     m_s.resize(n);
     for (std::uint32_t i = 0; i < n; ++i) {
         m_s[i].x = x[i];
@@ -70,9 +75,12 @@ Engine<D, Queue>::Engine(EngineConfig config, std::vector<V> x, std::vector<V> v
         m_uniformRadius = radius[0];
         m_uniformMass = mass[0];
     }
-    if (std::any_of(radius.begin(), radius.end(), [&](Real a) { return a != m_uniformRadius; })) m_radius = std::move(radius);
-    if (std::any_of(mass.begin(), mass.end(), [&](Real m) { return m != m_uniformMass; })) m_mass = std::move(mass);
-    m_maxRadius0 = m_radius.empty() ? (n ? m_uniformRadius : 0) : *std::max_element(m_radius.begin(), m_radius.end());
+    if (std::any_of(radius.begin(), radius.end(), [&](Real a) { return a != m_uniformRadius; }))
+        m_radius = std::move(radius);
+    if (std::any_of(mass.begin(), mass.end(), [&](Real m) { return m != m_uniformMass; }))
+        m_mass = std::move(mass);
+    m_maxRadius0 =
+        m_radius.empty() ? (n ? m_uniformRadius : 0) : *std::max_element(m_radius.begin(), m_radius.end());
     for (int d = 0; d < D; ++d) m_gravity = m_gravity || m_config.gravity[d] != 0;
     if (m_config.rough()) m_omega.assign(n, Vec3{});
     if (m_config.tc > 0) m_lastCollision.assign(n, -kNoEvent);
@@ -98,15 +106,18 @@ void Engine<D, Queue>::buildCells() {
     Real smallestPeriodicEdge = kNoEvent;
     for (int d = 0; d < D; ++d)
         if (m_config.periodic[d]) smallestPeriodicEdge = std::min(smallestPeriodicEdge, m_config.box[d]);
-    const Real edge = std::max({m_config.cellSize, diameter, std::min(lowDensityEdge, smallestPeriodicEdge / 3)});
+    const Real edge =
+        std::max({m_config.cellSize, diameter, std::min(lowDensityEdge, smallestPeriodicEdge / 3)});
     std::size_t cellCount = 1;
     for (int d = 0; d < D; ++d) {
         const Real L = m_config.box[d];
         // Fewer cells than the edge allows is always correct (cells only need to exceed 2a).
         int cells = edge > 0 ? static_cast<int>(std::min<Real>(std::floor(L / edge), kMaxCellsPerAxis)) : 1;
         if (m_config.periodic[d] && cells < 3)
-            throw std::invalid_argument("edmd::Engine: a periodic axis must hold at least 3 cells of one diameter "
-                                        "(box edge " + std::to_string(L) + " m, diameter " + std::to_string(2 * amax) + " m)");
+            throw std::invalid_argument(
+                "edmd::Engine: a periodic axis must hold at least 3 cells of one diameter "
+                "(box edge " +
+                std::to_string(L) + " m, diameter " + std::to_string(2 * amax) + " m)");
         cells = std::max(cells, 1);
         m_cells[d] = cells;
         m_stride[d] = static_cast<std::uint32_t>(cellCount);
@@ -230,8 +241,10 @@ typename Engine<D, Queue>::V Engine<D, Queue>::minimumImage(V d) const noexcept 
     for (int k = 0; k < D; ++k) {
         if (!m_config.periodic[k]) continue;
         const Real L = m_config.box[k];
-        if (d[k] > 0.5 * L) d[k] -= L;
-        else if (d[k] < -0.5 * L) d[k] += L;
+        if (d[k] > 0.5 * L)
+            d[k] -= L;
+        else if (d[k] < -0.5 * L)
+            d[k] += L;
     }
     return d;
 }
@@ -260,8 +273,10 @@ typename Engine<D, Queue>::V Engine<D, Queue>::positionSlot(std::uint32_t s) con
         // The parabola also for g = 0 (it adds +0).
         x[d] = flightPosition(p.x[d], p.v[d], m_config.gravity[d], dt);
         if (m_config.periodic[d]) {
-            if (x[d] < 0) x[d] += m_config.box[d];
-            else if (x[d] >= m_config.box[d]) x[d] -= m_config.box[d];
+            if (x[d] < 0)
+                x[d] += m_config.box[d];
+            else if (x[d] >= m_config.box[d])
+                x[d] -= m_config.box[d];
         }
     }
     return x;
@@ -292,9 +307,12 @@ void Engine<D, Queue>::schedule(std::uint32_t s) noexcept {
     GL_ASSERT(s < size(), "edmd::Engine::schedule: slot out of range");
     const bool growing = m_config.growthRate != 0;
     const bool uniform = m_radius.empty();
-    if (!m_gravity && !growing) uniform ? scheduleImpl<false, false, true>(s) : scheduleImpl<false, false, false>(s);
-    else if (m_gravity) growing ? scheduleImpl<true, true, false>(s) : scheduleImpl<true, false, false>(s);
-    else scheduleImpl<false, true, false>(s);
+    if (!m_gravity && !growing)
+        uniform ? scheduleImpl<false, false, true>(s) : scheduleImpl<false, false, false>(s);
+    else if (m_gravity)
+        growing ? scheduleImpl<true, true, false>(s) : scheduleImpl<true, false, false>(s);
+    else
+        scheduleImpl<false, true, false>(s);
 }
 
 // Event prediction of one particle (spec 2.8: keep only the earliest). The parts below are
@@ -477,7 +495,8 @@ void Engine<D, Queue>::collide(std::uint32_t i, std::uint32_t j, Real t) noexcep
     const Real approach = -dot(a.v - b.v, k) + 2 * m_config.growthRate;
     const bool tcElastic = elasticByTc(i, j, t);
     const Real eps = tcElastic ? 1 : m_config.restitution(std::abs(approach));
-    const Real normalImpulse = std::max<Real>(0, (1 + eps) * approach) * (mi * mj / (mi + mj));  // on i along k
+    const Real normalImpulse =
+        std::max<Real>(0, (1 + eps) * approach) * (mi * mj / (mi + mj));  // on i along k
     const Real before = 0.5 * (mi * dot(a.v, a.v) + mj * dot(b.v, b.v));
     Real after;
     if (m_omega.empty()) {
@@ -514,7 +533,7 @@ void Engine<D, Queue>::collideWall(std::uint32_t i, std::uint32_t wall, Real t) 
     const int d = static_cast<int>(wall / 2);
     const bool upper = wall % 2 == 1;
     const Real vn = upper ? p.v[d] : -p.v[d];  // towards the wall
-    if (vn > 0) {  // a round-off touch while leaving changes nothing
+    if (vn > 0) {                              // a round-off touch while leaving changes nothing
         const bool tcElastic = elasticByTc(i, kNone, t);
         const Real eps = tcElastic ? 1 : m_config.wallRestitution;
         m_dissipated += 0.5 * massSlot(i) * (1 - eps * eps) * vn * vn;
@@ -751,7 +770,8 @@ void Engine<D, Queue>::loadState(std::istream& is) {
         throw std::runtime_error("checkpoint holds another number of particles");
     m_slot.assign(n, kNone);
     for (std::uint32_t s = 0; s < n; ++s) {
-        if (id[s] >= n || m_slot[id[s]] != kNone) throw std::runtime_error("checkpoint corrupt (particle id)");
+        if (id[s] >= n || m_slot[id[s]] != kNone)
+            throw std::runtime_error("checkpoint corrupt (particle id)");
         m_slot[id[s]] = s;
     }
     m_queue.reset(n);

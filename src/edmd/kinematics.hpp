@@ -76,7 +76,8 @@ template <bool Gravity, int D>
 /// contact distance s = a1 + a2 (edmd Eq. 2.18-2.19, robust form of spec 2.8): +inf if they
 /// separate or miss; 0 if they already overlap by round-off while approaching.
 template <int D>
-[[gnu::always_inline]] inline Real pairCollisionTime(const VecD<D>& r12, const VecD<D>& v12, Real s) noexcept {
+[[gnu::always_inline]] inline Real pairCollisionTime(const VecD<D>& r12, const VecD<D>& v12,
+                                                     Real s) noexcept {
     const Real b = dot(r12, v12);
     if (!(b < 0)) return kNoEvent;  // separating (also the pair that has just collided)
     const Real v2 = dot(v12, v12);
@@ -148,7 +149,7 @@ inline Real firstPassage(Real x, Real v, Real g, Real target) noexcept {
 /// velocity changes, momentum is conserved, energy loss m_red/2 (1 - eps^2) v_n^2.
 template <int D>
 void smoothCollision(VecD<D>& v1, VecD<D>& v2, Real m1, Real m2, const VecD<D>& k, Real eps) noexcept {
-    const Real vn = dot(v1 - v2, k);  // < 0 when approaching
+    const Real vn = dot(v1 - v2, k);                        // < 0 when approaching
     const Real j = (1 + eps) * vn * (m1 * m2 / (m1 + m2));  // impulse magnitude along -k on 1
     v1 = v1 - k * (j / m1);
     v2 = v2 + k * (j / m2);
@@ -186,8 +187,8 @@ inline void roughCollision(Vec3& v1, Vec3& v2, Vec3& w1, Vec3& w2, const Vec3& k
 /// a1^2/I1 + a2^2/I2. normalImpulse [kg m/s] is the normal impulse on particle 1 along k
 /// (computed by the caller, so that speed-dependent restitution and growing spheres enter
 /// there). Disks: vectors in the plane (z = 0), spins along z.
-inline void roughCollisionGeneral(Vec3& v1, Vec3& v2, Vec3& w1, Vec3& w2, const Vec3& k, Real a1, Real a2, Real m1,
-                                  Real m2, Real z, Real normalImpulse, Real phi) noexcept {
+inline void roughCollisionGeneral(Vec3& v1, Vec3& v2, Vec3& w1, Vec3& w2, const Vec3& k, Real a1, Real a2,
+                                  Real m1, Real m2, Real z, Real normalImpulse, Real phi) noexcept {
     const Vec3 v12 = v1 - v2;
     const Vec3 g = v12 + crossProduct(k, w1 * a1 + w2 * a2);
     const Vec3 gt = g - k * dot(g, k);
