@@ -16,6 +16,7 @@
 #include <string>
 
 #include "core/binary_io.hpp"
+#include "core/error.hpp"
 
 namespace granulab::edmd {
 
@@ -36,8 +37,12 @@ void readVector(std::istream& is, std::vector<T, A>& v) {
     if (!is) throw std::runtime_error("checkpoint truncated");
 }
 
-Vec3 lift(const VecD<2>& a) noexcept { return {{a[0], a[1], 0}}; }
-Vec3 lift(const VecD<3>& a) noexcept { return a; }
+Vec3 lift(const VecD<2>& a) noexcept {
+    return {{a[0], a[1], 0}};
+}
+Vec3 lift(const VecD<3>& a) noexcept {
+    return a;
+}
 template <int D>
 VecD<D> lower(const Vec3& a) noexcept {
     VecD<D> r;
@@ -58,7 +63,8 @@ Engine<D, Queue>::Engine(EngineConfig config, std::vector<V> x, std::vector<V> v
         if (!(m_config.box[d] > 0)) throw std::invalid_argument("edmd::Engine: box edges must be positive");
     if (m_config.growthRate != 0)
         for (int d = 0; d < D; ++d)
-            if (!m_config.periodic[d]) throw std::invalid_argument("edmd::Engine: growing spheres need a periodic box");
+            if (!m_config.periodic[d])
+                throw std::invalid_argument("edmd::Engine: growing spheres need a periodic box");
     m_s.resize(n);
     for (std::uint32_t i = 0; i < n; ++i) {
         m_s[i].x = x[i];
@@ -69,9 +75,12 @@ Engine<D, Queue>::Engine(EngineConfig config, std::vector<V> x, std::vector<V> v
         m_uniformRadius = radius[0];
         m_uniformMass = mass[0];
     }
-    if (std::any_of(radius.begin(), radius.end(), [&](Real a) { return a != m_uniformRadius; })) m_radius = std::move(radius);
-    if (std::any_of(mass.begin(), mass.end(), [&](Real m) { return m != m_uniformMass; })) m_mass = std::move(mass);
-    m_maxRadius0 = m_radius.empty() ? (n ? m_uniformRadius : 0) : *std::max_element(m_radius.begin(), m_radius.end());
+    if (std::any_of(radius.begin(), radius.end(), [&](Real a) { return a != m_uniformRadius; }))
+        m_radius = std::move(radius);
+    if (std::any_of(mass.begin(), mass.end(), [&](Real m) { return m != m_uniformMass; }))
+        m_mass = std::move(mass);
+    m_maxRadius0 =
+        m_radius.empty() ? (n ? m_uniformRadius : 0) : *std::max_element(m_radius.begin(), m_radius.end());
     for (int d = 0; d < D; ++d) m_gravity = m_gravity || m_config.gravity[d] != 0;
     if (m_config.rough()) m_omega.assign(n, Vec3{});
     if (m_config.tc > 0) m_lastCollision.assign(n, -kNoEvent);
@@ -97,15 +106,18 @@ void Engine<D, Queue>::buildCells() {
     Real smallestPeriodicEdge = kNoEvent;
     for (int d = 0; d < D; ++d)
         if (m_config.periodic[d]) smallestPeriodicEdge = std::min(smallestPeriodicEdge, m_config.box[d]);
-    const Real edge = std::max({m_config.cellSize, diameter, std::min(lowDensityEdge, smallestPeriodicEdge / 3)});
+    const Real edge =
+        std::max({m_config.cellSize, diameter, std::min(lowDensityEdge, smallestPeriodicEdge / 3)});
     std::size_t cellCount = 1;
     for (int d = 0; d < D; ++d) {
         const Real L = m_config.box[d];
         // Fewer cells than the edge allows is always correct (cells only need to exceed 2a).
         int cells = edge > 0 ? static_cast<int>(std::min<Real>(std::floor(L / edge), kMaxCellsPerAxis)) : 1;
         if (m_config.periodic[d] && cells < 3)
-            throw std::invalid_argument("edmd::Engine: a periodic axis must hold at least 3 cells of one diameter "
-                                        "(box edge " + std::to_string(L) + " m, diameter " + std::to_string(2 * amax) + " m)");
+            throw std::invalid_argument(
+                "edmd::Engine: a periodic axis must hold at least 3 cells of one diameter "
+                "(box edge " +
+                std::to_string(L) + " m, diameter " + std::to_string(2 * amax) + " m)");
         cells = std::max(cells, 1);
         m_cells[d] = cells;
         m_stride[d] = static_cast<std::uint32_t>(cellCount);
@@ -202,6 +214,7 @@ template <int D, class Queue>
 std::uint32_t Engine<D, Queue>::cellIndex(const CellCoords& c) const noexcept {
     std::uint32_t k = 0;
     for (int d = 0; d < D; ++d) k += m_stride[d] * c[d];
+    GL_ASSERT(k < m_head.size(), "edmd::Engine: cell index out of range");
     return k;
 }
 
@@ -216,7 +229,10 @@ template <int D, class Queue>
 void Engine<D, Queue>::unlinkCell(std::uint32_t s) noexcept {
     // Singly linked: walk the (short) list of the cell to the predecessor.
     std::uint32_t* link = &m_head[cellIndex(m_cellOf[s])];
-    while (*link != s) link = &m_s[*link].next;
+    while (*link != s) {
+        GL_ASSERT(*link != kNone, "edmd::Engine: particle missing from its cell list");
+        link = &m_s[*link].next;
+    }
     *link = m_s[s].next;
 }
 
@@ -225,8 +241,10 @@ typename Engine<D, Queue>::V Engine<D, Queue>::minimumImage(V d) const noexcept 
     for (int k = 0; k < D; ++k) {
         if (!m_config.periodic[k]) continue;
         const Real L = m_config.box[k];
-        if (d[k] > 0.5 * L) d[k] -= L;
-        else if (d[k] < -0.5 * L) d[k] += L;
+        if (d[k] > 0.5 * L)
+            d[k] -= L;
+        else if (d[k] < -0.5 * L)
+            d[k] += L;
     }
     return d;
 }
@@ -250,12 +268,15 @@ template <int D, class Queue>
 typename Engine<D, Queue>::V Engine<D, Queue>::positionSlot(std::uint32_t s) const noexcept {
     const State& p = m_s[s];
     const Real dt = m_now - p.tst;
-    V x = p.x + p.v * dt;
+    V x;
     for (int d = 0; d < D; ++d) {
-        x[d] += 0.5 * m_config.gravity[d] * dt * dt;
+        // The parabola also for g = 0 (it adds +0).
+        x[d] = flightPosition(p.x[d], p.v[d], m_config.gravity[d], dt);
         if (m_config.periodic[d]) {
-            if (x[d] < 0) x[d] += m_config.box[d];
-            else if (x[d] >= m_config.box[d]) x[d] -= m_config.box[d];
+            if (x[d] < 0)
+                x[d] += m_config.box[d];
+            else if (x[d] >= m_config.box[d])
+                x[d] -= m_config.box[d];
         }
     }
     return x;
@@ -265,52 +286,61 @@ template <int D, class Queue>
 typename Engine<D, Queue>::V Engine<D, Queue>::velocitySlot(std::uint32_t s) const noexcept {
     V v = m_s[s].v;
     if (m_gravity)
-        for (int d = 0; d < D; ++d) v[d] += m_config.gravity[d] * (m_now - m_s[s].tst);
+        for (int d = 0; d < D; ++d) v[d] = flightVelocity(v[d], m_config.gravity[d], m_now - m_s[s].tst);
     return v;
 }
 
 template <int D, class Queue>
 void Engine<D, Queue>::advance(std::uint32_t s, Real t) noexcept {  // free flight, edmd Eq. 2.2-2.4
+    GL_ASSERT(s < size(), "edmd::Engine::advance: slot out of range");
     State& p = m_s[s];
     const Real dt = t - p.tst;
-    p.x = p.x + p.v * dt;
     if (m_gravity)
-        for (int d = 0; d < D; ++d) {
-            p.x[d] += 0.5 * m_config.gravity[d] * dt * dt;
-            p.v[d] += m_config.gravity[d] * dt;
-        }
+        freeFlight<true>(p.x, p.v, gravityVector(), dt);
+    else
+        freeFlight<false>(p.x, p.v, gravityVector(), dt);
     p.tst = t;
 }
 
 template <int D, class Queue>
 void Engine<D, Queue>::schedule(std::uint32_t s) noexcept {
+    GL_ASSERT(s < size(), "edmd::Engine::schedule: slot out of range");
     const bool growing = m_config.growthRate != 0;
     const bool uniform = m_radius.empty();
-    if (!m_gravity && !growing) uniform ? scheduleImpl<false, false, true>(s) : scheduleImpl<false, false, false>(s);
-    else if (m_gravity) growing ? scheduleImpl<true, true, false>(s) : scheduleImpl<true, false, false>(s);
-    else scheduleImpl<false, true, false>(s);
+    if (!m_gravity && !growing)
+        uniform ? scheduleImpl<false, false, true>(s) : scheduleImpl<false, false, false>(s);
+    else if (m_gravity)
+        growing ? scheduleImpl<true, true, false>(s) : scheduleImpl<true, false, false>(s);
+    else
+        scheduleImpl<false, true, false>(s);
 }
+
+// Event prediction of one particle (spec 2.8: keep only the earliest). The parts below are
+// forced inline: scheduleImpl is the hot path, and every neighbour test must stay in one loop.
 
 template <int D, class Queue>
 template <bool Gravity, bool Growing, bool Uniform>
-void Engine<D, Queue>::scheduleImpl(std::uint32_t i) noexcept {  // spec 2.8: keep only the earliest
+void Engine<D, Queue>::scheduleImpl(std::uint32_t i) noexcept {
+    const State& s = m_s[i];
+    Subject p{i, s.x, s.v, Uniform ? m_uniformRadius : radiusSlot(i)};
+    freeFlight<Gravity>(p.x, p.v, gravityVector(), m_now - s.tst);
     const CellCoords c = m_cellOf[i];
-    const State* const st = m_s.data();
-    const State& p = st[i];
-    const Real now = m_now;
-    const Real dt0 = now - p.tst;
-    V xi = p.x + p.v * dt0;
-    V vi = p.v;
-    if constexpr (Gravity)
-        for (int d = 0; d < D; ++d) {
-            xi[d] += 0.5 * m_config.gravity[d] * dt0 * dt0;
-            vi[d] += m_config.gravity[d] * dt0;
+    Prediction next;
+    predictFaces<Gravity>(p, c, next);
+    predictPairs<Gravity, Growing, Uniform>(p, neighbourhood(c), next);
+    push(i, next);
+}
+
+template <int D, class Queue>
+template <bool Gravity>
+[[gnu::always_inline]] inline void Engine<D, Queue>::predictFaces(const Subject& p, const CellCoords& c,
+                                                                  Prediction& next) const noexcept {
+    const auto keepEarlier = [&next](Real dt, std::uint32_t partner) {
+        if (dt < next.dt) {
+            next.dt = dt;
+            next.ev = {partner, 0};
         }
-    const Real growth = m_config.growthRate;
-    const Real ri = Uniform ? m_uniformRadius : radiusSlot(i);
-    Real best = kNoEvent;
-    Event ev;
-    // Cell faces and walls, per axis (edmd Eq. 2.22-2.25).
+    };
     for (int d = 0; d < D; ++d) {
         const Real g = Gravity ? m_config.gravity[d] : 0;
         const bool periodic = m_config.periodic[d];
@@ -318,130 +348,133 @@ void Engine<D, Queue>::scheduleImpl(std::uint32_t i) noexcept {  // spec 2.8: ke
         const Real lo = cd * m_cellEdge[d];
         const Real hi = cd + 1 == m_cells[d] ? m_config.box[d] : (cd + 1) * m_cellEdge[d];
         const auto up = static_cast<std::uint32_t>(2 * d + 1), down = static_cast<std::uint32_t>(2 * d);
-        if (periodic || cd + 1 < m_cells[d]) {
-            const Real dt = closingTime(hi - xi[d], vi[d], g);
-            if (dt < best) {
-                best = dt;
-                ev = {kCellBase + up, 0};
-            }
-        } else {  // upper wall: contact when the centre is a below it
-            const Real dt = closingTime(m_config.box[d] - ri - xi[d], vi[d], g);
-            if (dt < best) {
-                best = dt;
-                ev = {kWallBase + up, 0};
-            }
-        }
-        if (periodic || cd > 0) {
-            const Real dt = closingTime(xi[d] - lo, -vi[d], -g);
-            if (dt < best) {
-                best = dt;
-                ev = {kCellBase + down, 0};
-            }
-        } else {
-            const Real dt = closingTime(xi[d] - ri, -vi[d], -g);
-            if (dt < best) {
-                best = dt;
-                ev = {kWallBase + down, 0};
-            }
-        }
+        if (periodic || cd + 1 < m_cells[d])
+            keepEarlier(closingTime(hi - p.x[d], p.v[d], g), kCellBase + up);
+        else  // upper wall: contact when the centre is a below it
+            keepEarlier(closingTime(m_config.box[d] - p.radius - p.x[d], p.v[d], g), kWallBase + up);
+        if (periodic || cd > 0)
+            keepEarlier(closingTime(p.x[d] - lo, -p.v[d], -g), kCellBase + down);
+        else
+            keepEarlier(closingTime(p.x[d] - p.radius, -p.v[d], -g), kWallBase + down);
     }
-    // Collisions with the particles of the (up to) 3^D neighbour cells. A neighbour cell across
-    // a periodic boundary is seen through its image: shift[d] is added to its particles'
-    // positions (applied to x_i instead), so the pair that will collide through the boundary is
-    // found even while its minimum image is still the other one (spec 2.4 [I], image shifts).
-    std::uint32_t offset[3][3] = {};  // cell index contribution per axis and neighbour
-    Real shift[3][3] = {};
-    int count[3] = {1, 1, 1};
+}
+
+template <int D, class Queue>
+[[gnu::always_inline]] inline typename Engine<D, Queue>::Neighbourhood Engine<D, Queue>::neighbourhood(
+    const CellCoords& c) const noexcept {
+    Neighbourhood nb;
     for (int d = 0; d < D; ++d) {
         const int cd = c[d];
+        GL_ASSERT(cd < m_cells[d], "edmd::Engine: cell coordinate out of range");
         int k = 0;
         if (cd > 0) {
-            offset[d][k] = m_stride[d] * static_cast<std::uint32_t>(cd - 1);
-            shift[d][k++] = 0;
+            nb.offset[d][k] = m_stride[d] * static_cast<std::uint32_t>(cd - 1);
+            nb.shift[d][k++] = 0;
         } else if (m_config.periodic[d]) {
-            offset[d][k] = m_stride[d] * static_cast<std::uint32_t>(m_cells[d] - 1);
-            shift[d][k++] = -m_config.box[d];
+            nb.offset[d][k] = m_stride[d] * static_cast<std::uint32_t>(m_cells[d] - 1);
+            nb.shift[d][k++] = -m_config.box[d];
         }
-        offset[d][k] = m_stride[d] * static_cast<std::uint32_t>(cd);
-        shift[d][k++] = 0;
+        nb.offset[d][k] = m_stride[d] * static_cast<std::uint32_t>(cd);
+        nb.shift[d][k++] = 0;
         if (cd + 1 < m_cells[d]) {
-            offset[d][k] = m_stride[d] * static_cast<std::uint32_t>(cd + 1);
-            shift[d][k++] = 0;
+            nb.offset[d][k] = m_stride[d] * static_cast<std::uint32_t>(cd + 1);
+            nb.shift[d][k++] = 0;
         } else if (m_config.periodic[d]) {
-            offset[d][k] = 0;
-            shift[d][k++] = m_config.box[d];
+            nb.offset[d][k] = 0;
+            nb.shift[d][k++] = m_config.box[d];
         }
-        count[d] = k;
+        nb.count[d] = k;
     }
-    const Real sumGrowth = 2 * growth;
-    const Real growthNow = growth * now;
+    return nb;
+}
+
+template <int D, class Queue>
+template <bool Gravity, bool Growing, bool Uniform>
+[[gnu::always_inline]] inline void Engine<D, Queue>::predictPairs(const Subject& p, const Neighbourhood& nb,
+                                                                  Prediction& next) const noexcept {
+    // A neighbour cell across a periodic boundary is seen through its image: its shift is
+    // added to its particles' positions (applied to x_i instead), so the pair that will collide
+    // through the boundary is found even while its minimum image is still the other one.
+    const State* const st = m_s.data();
     const std::uint32_t* const head = m_head.data();
+    const V g = gravityVector();
+    const Real now = m_now;
     constexpr Real kSafe = 1 + 1e-12;
-    Real bound = 2 * best * kSafe;
+    Real bound = 2 * next.dt * kSafe;
     // First pass: the heads of all neighbour cells, and a prefetch of their first particles,
     // so that the (mostly L2-missing) neighbour lines load in parallel, not one after another.
     std::uint32_t first[27];
     {
         int n = 0;
-        for (int kz = 0; kz < count[2]; ++kz)
-            for (int ky = 0; ky < count[1]; ++ky)
-                for (int kx = 0; kx < count[0]; ++kx) {
-                    const std::uint32_t j = head[offset[0][kx] + offset[1][ky] + offset[2][kz]];
+        for (int kz = 0; kz < nb.count[2]; ++kz)
+            for (int ky = 0; ky < nb.count[1]; ++ky)
+                for (int kx = 0; kx < nb.count[0]; ++kx) {
+                    const std::uint32_t j = head[nb.offset[0][kx] + nb.offset[1][ky] + nb.offset[2][kz]];
                     first[n++] = j;
                     if (j != kNone) __builtin_prefetch(&st[j]);
                 }
     }
     int cellNo = 0;
-    for (int kz = 0; kz < count[2]; ++kz)
-        for (int ky = 0; ky < count[1]; ++ky)
-            for (int kx = 0; kx < count[0]; ++kx) {
-                V xiImage = xi;
-                xiImage[0] -= shift[0][kx];
-                xiImage[1] -= shift[1][ky];
-                if constexpr (D == 3) xiImage[2] -= shift[2][kz];
+    for (int kz = 0; kz < nb.count[2]; ++kz)
+        for (int ky = 0; ky < nb.count[1]; ++ky)
+            for (int kx = 0; kx < nb.count[0]; ++kx) {
+                V xiImage = p.x;
+                xiImage[0] -= nb.shift[0][kx];
+                xiImage[1] -= nb.shift[1][ky];
+                if constexpr (D == 3) xiImage[2] -= nb.shift[2][kz];
                 for (std::uint32_t j = first[cellNo++]; j != kNone; j = st[j].next) {
-                    // i itself needs no test: r = w = 0 exactly, so b = 0 and no event.
                     const State& q = st[j];
-                    const Real dtj = now - q.tst;
-                    V r, w;
-                    for (int d = 0; d < D; ++d) {
-                        Real xj = q.x[d] + q.v[d] * dtj;
-                        Real vj = q.v[d];
-                        if constexpr (Gravity) {
-                            xj += 0.5 * m_config.gravity[d] * dtj * dtj;
-                            vj += m_config.gravity[d] * dtj;
-                        }
-                        r[d] = xiImage[d] - xj;
-                        w[d] = vi[d] - vj;
-                    }
+                    V xj = q.x, vj = q.v;
+                    freeFlight<Gravity>(xj, vj, g, now - q.tst);
                     Real dt;
-                    if constexpr (Growing) {
-                        if (j == i) continue;
-                        dt = growingPairCollisionTime(r, w, ri + (m_radius.empty() ? m_uniformRadius : m_radius[j]) + growthNow, sumGrowth);
-                    } else {
-                        // One branch on a cheap test first: only approaching pairs (b < 0)
-                        // whose root can beat `best` need the square root and the division
-                        // (slow on this hardware). The root c/(-b + sqrt(disc)) is at least
-                        // c/(-2b) since disc <= b^2; kSafe keeps round-off on the safe side, so
-                        // only pairs that would lose anyway are skipped.
-                        const Real b = dot(r, w);
-                        const Real sum = ri + (Uniform ? m_uniformRadius : m_radius.empty() ? m_uniformRadius : m_radius[j]);
-                        const Real cc = dot(r, r) - sum * sum;
-                        if (!((b < 0) & (cc <= -b * bound))) continue;  // also i itself (b = 0)
-                        const Real disc = b * b - dot(w, w) * cc;
-                        if (!(disc >= 0)) continue;  // misses
-                        dt = cc <= 0 ? 0 : cc / (-b + std::sqrt(disc));  // as pairCollisionTime
-                    }
-                    if (dt < best || (dt == best && ev.partner < kMaxParticles && j < ev.partner)) {
-                        best = dt;
-                        bound = 2 * best * kSafe;
-                        ev = {j, q.counter};
+                    if (!pairTime<Growing, Uniform>(p, j, xiImage - xj, p.v - vj, bound, dt)) continue;
+                    if (dt < next.dt ||
+                        (dt == next.dt && next.ev.partner < kMaxParticles && j < next.ev.partner)) {
+                        next.dt = dt;
+                        bound = 2 * next.dt * kSafe;
+                        next.ev = {j, q.counter};
                     }
                 }
             }
-    m_event[i] = ev;
-    m_queue.set(i, ev.partner == kNone ? kNoEvent : now + best);
 }
+
+template <int D, class Queue>
+template <bool Growing, bool Uniform>
+[[gnu::always_inline]] inline bool Engine<D, Queue>::pairTime(const Subject& p, std::uint32_t j, const V& r,
+                                                              const V& w, Real bound,
+                                                              Real& dt) const noexcept {
+    if constexpr (Growing) {
+        if (j == p.slot) return false;
+        const Real growth = m_config.growthRate;
+        dt = growingPairCollisionTime(
+            r, w, p.radius + (m_radius.empty() ? m_uniformRadius : m_radius[j]) + growth * m_now, 2 * growth);
+        return true;
+    } else {
+        // One branch on a cheap test first: only approaching pairs (b < 0) whose root can beat
+        // `bound` (twice the earliest time so far) need the square root and the division (slow
+        // on this hardware). The root c/(-b + sqrt(disc)) is at least c/(-2b) since disc <= b^2;
+        // the caller's bound keeps round-off on the safe side, so only pairs that would lose
+        // anyway are skipped. The subject itself needs no test: r = w = 0 exactly, so b = 0.
+        const Real b = dot(r, w);
+        const Real sum = p.radius + (Uniform            ? m_uniformRadius
+                                     : m_radius.empty() ? m_uniformRadius
+                                                        : m_radius[j]);
+        const Real cc = dot(r, r) - sum * sum;
+        if (!((b < 0) & (cc <= -b * bound))) return false;
+        const Real disc = b * b - dot(w, w) * cc;
+        if (!(disc >= 0)) return false;                  // misses
+        dt = cc <= 0 ? 0 : cc / (-b + std::sqrt(disc));  // as pairCollisionTime
+        return true;
+    }
+}
+
+template <int D, class Queue>
+[[gnu::always_inline]] inline void Engine<D, Queue>::push(std::uint32_t s, const Prediction& next) noexcept {
+    GL_ASSERT(!(next.dt < 0), "edmd::Engine: event predicted in the past");
+    m_event[s] = next.ev;
+    m_queue.set(s, next.ev.partner == kNone ? kNoEvent : m_now + next.dt);
+}
+
 template <int D, class Queue>
 bool Engine<D, Queue>::elasticByTc(std::uint32_t i, std::uint32_t j, Real t) const noexcept {
     if (m_lastCollision.empty()) return false;
@@ -462,7 +495,8 @@ void Engine<D, Queue>::collide(std::uint32_t i, std::uint32_t j, Real t) noexcep
     const Real approach = -dot(a.v - b.v, k) + 2 * m_config.growthRate;
     const bool tcElastic = elasticByTc(i, j, t);
     const Real eps = tcElastic ? 1 : m_config.restitution(std::abs(approach));
-    const Real normalImpulse = std::max<Real>(0, (1 + eps) * approach) * (mi * mj / (mi + mj));  // on i along k
+    const Real normalImpulse =
+        std::max<Real>(0, (1 + eps) * approach) * (mi * mj / (mi + mj));  // on i along k
     const Real before = 0.5 * (mi * dot(a.v, a.v) + mj * dot(b.v, b.v));
     Real after;
     if (m_omega.empty()) {
@@ -499,7 +533,7 @@ void Engine<D, Queue>::collideWall(std::uint32_t i, std::uint32_t wall, Real t) 
     const int d = static_cast<int>(wall / 2);
     const bool upper = wall % 2 == 1;
     const Real vn = upper ? p.v[d] : -p.v[d];  // towards the wall
-    if (vn > 0) {  // a round-off touch while leaving changes nothing
+    if (vn > 0) {                              // a round-off touch while leaving changes nothing
         const bool tcElastic = elasticByTc(i, kNone, t);
         const Real eps = tcElastic ? 1 : m_config.wallRestitution;
         m_dissipated += 0.5 * massSlot(i) * (1 - eps * eps) * vn * vn;
@@ -517,6 +551,8 @@ void Engine<D, Queue>::crossCell(std::uint32_t i, std::uint32_t face) noexcept {
     const bool up = face % 2 == 1;
     unlinkCell(i);
     int c = m_cellOf[i][d] + (up ? 1 : -1);
+    GL_ASSERT(m_config.periodic[d] || (c >= 0 && c < m_cells[d]),
+              "edmd::Engine: cell crossing through a wall");
     if (c == m_cells[d]) {
         c = 0;
         m_s[i].x[d] -= m_config.box[d];
@@ -557,12 +593,14 @@ std::uint64_t Engine<D, Queue>::run(Real tEnd, std::uint64_t collisionLimit) {
             continue;
         }
         const std::uint32_t i = m_queue.top();
+        GL_ASSERT(i < size() && t >= m_now, "edmd::Engine: event slot out of range or event in the past");
         m_now = t;
         const Event ev = m_event[i];
         ++done;
         ++m_stats.events;
         if (ev.partner < kMaxParticles) {
             const std::uint32_t j = ev.partner;
+            GL_ASSERT(j < size() && j != i, "edmd::Engine: collision partner out of range");
             if (m_s[j].counter != ev.partnerCounter) {  // annulled (spec 2.6): free flight, new event
                 ++m_stats.annulled;
                 advance(i, t);
@@ -678,7 +716,7 @@ void Engine<D, Queue>::saveState(std::ostream& os) const {
     writeVector(os, m_s);
     writeVector(os, m_event);
     writeVector(os, m_cellOf);
-    std::vector<std::uint32_t> id(size());  // caller's particle index of each slot (same format as before)
+    std::vector<std::uint32_t> id(size());  // caller's particle index of each slot (the inverse of m_slot)
     for (std::uint32_t i = 0; i < size(); ++i) id[m_slot[i]] = i;
     writeVector(os, id);
     writeVector(os, m_radius);
@@ -732,7 +770,8 @@ void Engine<D, Queue>::loadState(std::istream& is) {
         throw std::runtime_error("checkpoint holds another number of particles");
     m_slot.assign(n, kNone);
     for (std::uint32_t s = 0; s < n; ++s) {
-        if (id[s] >= n || m_slot[id[s]] != kNone) throw std::runtime_error("checkpoint corrupt (particle id)");
+        if (id[s] >= n || m_slot[id[s]] != kNone)
+            throw std::runtime_error("checkpoint corrupt (particle id)");
         m_slot[id[s]] = s;
     }
     m_queue.reset(n);

@@ -21,10 +21,10 @@
 namespace granulab::edmd {
 
 struct EngineConfig {
-    std::array<Real, 3> box{1, 1, 1};             ///< [m] box edge per axis, origin at 0
+    std::array<Real, 3> box{1, 1, 1};                ///< [m] box edge per axis, origin at 0
     std::array<bool, 3> periodic{true, true, true};  ///< false: hard plane walls at 0 and box
-    Restitution restitution;                      ///< normal restitution between particles
-    Real wallRestitution = 1;                     ///< normal restitution at the walls
+    Restitution restitution;                         ///< normal restitution between particles
+    Real wallRestitution = 1;                        ///< normal restitution at the walls
     /// Rough spheres (edmd Eq. 2.6-2.8): tangential restitution phi in [-1, 1] (-1: smooth, no
     /// spin is tracked); inertiaFactor z = I/(m a^2) (0.4 solid sphere, 0.5 solid disk).
     Real tangentialRestitution = -1;
@@ -32,9 +32,11 @@ struct EngineConfig {
     /// TC model (edmd spec 4.3, Luding & McNamara): a collision (also with a wall) is elastic if
     /// either partner collided less than tc [s] before (prevents inelastic collapse); 0: off.
     Real tc = 0;
-    std::array<Real, 3> gravity{0, 0, 0};         ///< [m/s^2]
-    Real growthRate = 0;  ///< [m/s] u_a: every radius grows as a(t) = a(0) + u_a t (edmd Eq. 2.16); periodic boxes only
-    Real cellSize = 0;    ///< [m] lower bound of the cell edge; 0: the largest diameter (rounded up to fit the box)
+    std::array<Real, 3> gravity{0, 0, 0};  ///< [m/s^2]
+    /// [m/s] u_a: every radius grows as a(t) = a(0) + u_a t (edmd Eq. 2.16); periodic boxes only.
+    Real growthRate = 0;
+    /// [m] lower bound of the cell edge; 0: the largest diameter (rounded up to fit the box).
+    Real cellSize = 0;
 
     bool rough() const noexcept { return tangentialRestitution > -1; }
 };
@@ -52,7 +54,8 @@ public:
     /// Particles at positions x [m] (inside the box, not overlapping), velocities v [m/s],
     /// radii [m] (at time 0), masses [kg]; all at time 0. Throws std::invalid_argument when the
     /// box holds fewer than 3 cells per periodic axis or the input is inconsistent.
-    Engine(EngineConfig config, std::vector<V> x, std::vector<V> v, std::vector<Real> radius, std::vector<Real> mass);
+    Engine(EngineConfig config, std::vector<V> x, std::vector<V> v, std::vector<Real> radius,
+           std::vector<Real> mass);
 
     /// Executes events until the next one would be later than t_end [s]; afterwards time() is
     /// t_end. Returns the events done.
@@ -107,10 +110,11 @@ public:
 
 private:
     // ---- events (spec 2.2 "Event", 8 bytes): the partner field encodes the kind.
-    static constexpr std::uint32_t kNone = 0xFFFFFFFFu;       ///< no event (t = +inf) / end of a cell list
-    static constexpr std::uint32_t kCellBase = 0xFFFFFFF0u;   ///< + face: cell crossing, face = 2 axis + (1 if upward)
-    static constexpr std::uint32_t kWallBase = 0xFFFFFFE0u;   ///< + face: plane wall at that face of the box
-    static constexpr std::uint32_t kMaxParticles = kWallBase; ///< slots below this are particles
+    static constexpr std::uint32_t kNone = 0xFFFFFFFFu;  ///< no event (t = +inf) / end of a cell list
+    /// + face: cell crossing, face = 2 axis + (1 if upward).
+    static constexpr std::uint32_t kCellBase = 0xFFFFFFF0u;
+    static constexpr std::uint32_t kWallBase = 0xFFFFFFE0u;    ///< + face: plane wall at that face of the box
+    static constexpr std::uint32_t kMaxParticles = kWallBase;  ///< slots below this are particles
     struct Event {
         std::uint32_t partner = kNone;     ///< particle slot, kCellBase + face, kWallBase + face or kNone
         std::uint32_t partnerCounter = 0;  ///< partner's collision counter when scheduled (collisions only)
@@ -121,22 +125,64 @@ private:
     /// particles of neighbouring cells lie close in memory; m_id/m_slot map slots and the
     /// caller's particle indices.
     struct alignas(D == 3 ? 64 : 16) State {
-        V x;                        ///< [m] position at t_st
-        V v;                        ///< [m/s] velocity at t_st
-        Real tst = 0;               ///< [s] time of the last update
-        std::uint32_t next = kNone; ///< next slot in the same cell (singly linked, ascending after a sort)
-        std::uint32_t counter = 0;  ///< collision counter (wrap-around is harmless: only equality is tested)
+        V x;                         ///< [m] position at t_st
+        V v;                         ///< [m/s] velocity at t_st
+        Real tst = 0;                ///< [s] time of the last update
+        std::uint32_t next = kNone;  ///< next slot in the same cell (singly linked, ascending after a sort)
+        std::uint32_t counter = 0;   ///< collision counter (wrap-around is harmless: only equality is tested)
     };
     using CellCoords = std::array<std::uint16_t, D>;  ///< integer cell coordinates per axis
     static constexpr int kMaxCellsPerAxis = 65535;
     /// Events between two spatial sorts, in units of N (a sort costs about as much as N events).
     static constexpr std::uint64_t kSortEvery = 16;
 
+    /// The particle whose next event is being predicted, brought to the current time.
+    struct Subject {
+        std::uint32_t slot;  ///< its slot
+        V x;                 ///< [m] position now
+        V v;                 ///< [m/s] velocity now
+        Real radius;         ///< [m] radius now
+    };
+    /// The earliest event found so far while predicting (spec 2.8: only the earliest is kept).
+    struct Prediction {
+        Real dt = kNoEvent;  ///< [s] from now
+        Event ev;
+    };
+    /// The neighbour cells of a cell: up to 3 per axis (fewer at a wall), each as its
+    /// contribution to the cell index and the image shift [m] of its particles across a periodic
+    /// boundary (spec 2.4 [I], image shifts).
+    struct Neighbourhood {
+        std::uint32_t offset[3][3] = {};
+        Real shift[3][3] = {};
+        int count[3] = {1, 1, 1};
+    };
+
     std::uint64_t run(Real tEnd, std::uint64_t collisionLimit);
     void advance(std::uint32_t s, Real t) noexcept;
     void schedule(std::uint32_t s) noexcept;
     template <bool Gravity, bool Growing, bool Uniform>
     void scheduleImpl(std::uint32_t s) noexcept;
+    /// Cell-face crossings and plane walls of the subject's cell (edmd Eq. 2.22-2.25).
+    template <bool Gravity>
+    void predictFaces(const Subject& p, const CellCoords& c, Prediction& next) const noexcept;
+    Neighbourhood neighbourhood(const CellCoords& c) const noexcept;
+    /// Collisions with the particles of the neighbour cells (edmd Eq. 2.18-2.21).
+    template <bool Gravity, bool Growing, bool Uniform>
+    void predictPairs(const Subject& p, const Neighbourhood& nb, Prediction& next) const noexcept;
+    /// Collision time [s] of the subject with slot j at relative position r [m] and velocity w
+    /// [m/s]; false when the pair cannot collide before `bound` [s] (fixed radii: a cheap test
+    /// before the square root) or j is the subject (growing radii).
+    template <bool Growing, bool Uniform>
+    bool pairTime(const Subject& p, std::uint32_t j, const V& r, const V& w, Real bound,
+                  Real& dt) const noexcept;
+    /// Stores the predicted event of slot s and queues it at now + dt.
+    void push(std::uint32_t s, const Prediction& next) noexcept;
+    /// Gravity [m/s^2] as a D-vector.
+    V gravityVector() const noexcept {
+        V g;
+        for (int d = 0; d < D; ++d) g[d] = m_config.gravity[d];
+        return g;
+    }
     void collide(std::uint32_t s, std::uint32_t j, Real t) noexcept;
     void collideWall(std::uint32_t s, std::uint32_t wall, Real t) noexcept;
     void crossCell(std::uint32_t s, std::uint32_t face) noexcept;
@@ -163,18 +209,19 @@ private:
     EngineConfig m_config;
     BigVector<State> m_s;
     BigVector<Event> m_event;
-    BigVector<CellCoords> m_cellOf;      ///< cell of each slot
-    BigVector<std::uint32_t> m_slot;     ///< slot of each particle index (the inverse is made only for checkpoints)
-    std::vector<Real> m_radius;            ///< [m] radius at time 0 per slot; empty if all equal (m_uniformRadius)
-    std::vector<Real> m_mass;              ///< [kg] per slot; empty if all equal (m_uniformMass)
+    BigVector<CellCoords> m_cellOf;  ///< cell of each slot
+    /// Slot of each particle index (the inverse is made only for checkpoints).
+    BigVector<std::uint32_t> m_slot;
+    std::vector<Real> m_radius;  ///< [m] radius at time 0 per slot; empty if all equal (m_uniformRadius)
+    std::vector<Real> m_mass;    ///< [kg] per slot; empty if all equal (m_uniformMass)
     Real m_uniformRadius = 0, m_uniformMass = 1;
-    std::vector<Vec3> m_omega;             ///< [rad/s] per slot, rough spheres only
-    std::vector<Real> m_lastCollision;     ///< [s] per slot: time of the last collision (TC model only)
-    BigVector<std::uint32_t> m_head;     ///< first slot of each cell
-    Queue m_queue;                         ///< keyed by slot
-    std::array<int, 3> m_cells{1, 1, 1};     ///< cells per axis
+    std::vector<Vec3> m_omega;            ///< [rad/s] per slot, rough spheres only
+    std::vector<Real> m_lastCollision;    ///< [s] per slot: time of the last collision (TC model only)
+    BigVector<std::uint32_t> m_head;      ///< first slot of each cell
+    Queue m_queue;                        ///< keyed by slot
+    std::array<int, 3> m_cells{1, 1, 1};  ///< cells per axis
     std::array<std::uint32_t, 3> m_stride{1, 1, 1};  ///< cell index stride per axis
-    std::array<Real, 3> m_cellEdge{1, 1, 1}; ///< [m]
+    std::array<Real, 3> m_cellEdge{1, 1, 1};         ///< [m]
     std::array<Real, 3> m_invCellEdge{1, 1, 1};
     Real m_regridTime = kNoEvent;  ///< [s] growing spheres outgrow the cells at this time
     Real m_maxRadius0 = 0;         ///< [m] largest radius at time 0

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Event queues (edmd spec section 2.3): addressable binary heap and tournament tree.
+// Event queues (edmd spec section 2.3): addressable binary heap, tournament tree and calendar
+// queue.
 #include "edmd/event_queue.hpp"
 
 #include <algorithm>
@@ -70,7 +71,8 @@ void TournamentTree::set(std::uint32_t i, Real t) noexcept {
 std::uint32_t CalendarQueue::binOf(Real t) const noexcept {
     const Real x = (t - m_start) * m_invWidth;  // +inf and beyond-window times go to the overflow
     if (!(x < static_cast<Real>(m_bins))) return m_bins;
-    if (!(x >= static_cast<Real>(m_current))) return m_current;  // earlier than the current bin: scan it there
+    if (!(x >= static_cast<Real>(m_current)))
+        return m_current;  // earlier than the current bin: scan it there
     return static_cast<std::uint32_t>(x);
 }
 
@@ -83,8 +85,10 @@ void CalendarQueue::link(std::uint32_t i, std::uint32_t bin) noexcept {
 
 void CalendarQueue::unlink(std::uint32_t i) noexcept {
     const std::uint32_t prev = m_node[i].prev;
-    if (prev & kHeadOf) m_head[prev & ~kHeadOf] = m_node[i].next;
-    else m_node[prev].next = m_node[i].next;
+    if (prev & kHeadOf)
+        m_head[prev & ~kHeadOf] = m_node[i].next;
+    else
+        m_node[prev].next = m_node[i].next;
     if (m_node[i].next != kNone) m_node[m_node[i].next].prev = prev;  // a new head inherits the bin tag
 }
 

@@ -3,7 +3,7 @@
 // particle, keyed by its time; the key of a particle is replaced (never removed) when its event
 // changes, stale events are recognised by the caller when they reach the top. Ties are broken
 // by the smaller particle index, so the event order is deterministic.
-// Two implementations behind one interface (no virtual calls; the engine is a template on the
+// Three implementations behind one interface (no virtual calls; the engine is a template on the
 // queue type):
 //  * AddressableHeap: implicit binary heap with heap_pos[particle] (the thesis' queue).
 //  * TournamentTree: complete binary tree over the N particles (Marin, Risso & Cordero 1993),
@@ -12,9 +12,10 @@
 //  * CalendarQueue: O(1) amortised, in the style of Paul (J. Comput. Phys. 221, 2007): a window
 //    of B bins of width w in doubly linked lists, an overflow list beyond the window, and the
 //    earliest event found by a scan of the current bin (a few events). When the window is used
-//    up it is rebuilt from the overflow with w = span / B from the pending event times; when the
-//    current bin grows long (more than 64 events) everything is re-binned, at most once per B
-//    updates, so the cost stays O(1) amortised.
+//    up it is rebuilt from the overflow: it starts at the earliest pending time and spans twice
+//    the mean distance of the pending times from it (w = span / B); when the current bin grows
+//    long (more than 64 events) everything is re-binned, at most once per B updates, so the
+//    cost stays O(1) amortised.
 #pragma once
 #include <sys/mman.h>
 
@@ -49,11 +50,15 @@ struct BigArrayAllocator {
         return static_cast<T*>(p);
     }
     void deallocate(T* p, std::size_t n) noexcept {
-        if (n * sizeof(T) < kHuge) ::operator delete(p, std::align_val_t(alignof(T)));
-        else std::free(p);
+        if (n * sizeof(T) < kHuge)
+            ::operator delete(p, std::align_val_t(alignof(T)));
+        else
+            std::free(p);
     }
     template <class U>
-    bool operator==(const BigArrayAllocator<U>&) const noexcept { return true; }
+    bool operator==(const BigArrayAllocator<U>&) const noexcept {
+        return true;
+    }
 };
 template <class T>
 using BigVector = std::vector<T, BigArrayAllocator<T>>;
@@ -79,7 +84,9 @@ public:
     }
 
 private:
-    bool before(std::uint32_t a, std::uint32_t b) const noexcept { return earlier(m_time[a], a, m_time[b], b); }
+    bool before(std::uint32_t a, std::uint32_t b) const noexcept {
+        return earlier(m_time[a], a, m_time[b], b);
+    }
     void place(std::uint32_t slot, std::uint32_t particle) noexcept {
         m_heap[slot] = particle;
         m_pos[particle] = slot;
@@ -97,12 +104,14 @@ public:
     Real topTime() const noexcept { return m_time[m_node[1]]; }
     Real time(std::uint32_t i) const noexcept { return m_time[i]; }
     std::uint32_t size() const noexcept { return m_n; }
-    std::size_t memoryBytes() const noexcept { return m_time.capacity() * sizeof(Real) + m_node.capacity() * 4; }
+    std::size_t memoryBytes() const noexcept {
+        return m_time.capacity() * sizeof(Real) + m_node.capacity() * 4;
+    }
 
 private:
     std::uint32_t m_n = 0, m_leaves = 1;  ///< particles; leaves (power of two >= n)
-    BigVector<Real> m_time;             ///< [s] per particle, padded leaves at +infinity
-    BigVector<std::uint32_t> m_node;    ///< 1-based tree: node k holds the winner of 2k, 2k+1
+    BigVector<Real> m_time;               ///< [s] per particle, padded leaves at +infinity
+    BigVector<std::uint32_t> m_node;      ///< 1-based tree: node k holds the winner of 2k, 2k+1
 };
 
 /// Particle indices must be below 2^31 (the top bit of a back link tags a list head).
@@ -115,7 +124,9 @@ public:
     Real time(std::uint32_t i) const noexcept { return m_node[i].time; }
     std::uint32_t size() const noexcept { return static_cast<std::uint32_t>(m_node.size()); }
     std::uint64_t rebuilds() const noexcept { return m_rebuilds; }
-    std::size_t memoryBytes() const noexcept { return m_node.capacity() * sizeof(Node) + m_head.capacity() * 4; }
+    std::size_t memoryBytes() const noexcept {
+        return m_node.capacity() * sizeof(Node) + m_head.capacity() * 4;
+    }
 
 private:
     static constexpr std::uint32_t kNone = 0xFFFFFFFFu;
@@ -139,11 +150,11 @@ private:
         std::uint32_t prev;
     };
     BigVector<Node> m_node;
-    BigVector<std::uint32_t> m_head; ///< first particle of each bin; [B] is the overflow list
+    BigVector<std::uint32_t> m_head;  ///< first particle of each bin; [B] is the overflow list
     std::uint32_t m_bins = 1, m_current = 0, m_top = 0;
-    std::uint32_t m_topBin = 0;        ///< bin in which settle() found m_top
-    Real m_start = 0;                  ///< [s] start of bin 0
-    Real m_width = 1;                  ///< [s] bin width
+    std::uint32_t m_topBin = 0;  ///< bin in which settle() found m_top
+    Real m_start = 0;            ///< [s] start of bin 0
+    Real m_width = 1;            ///< [s] bin width
     Real m_invWidth = 1;
     std::uint64_t m_rebuilds = 0;
     std::uint64_t m_setsSinceRebuild = 0;  ///< amortisation guard of rebuildAll

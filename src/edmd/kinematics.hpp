@@ -39,11 +39,45 @@ using Vec3 = VecD<3>;
 
 inline constexpr Real kNoEvent = std::numeric_limits<Real>::infinity();
 
+/// Free flight over dt [s] (edmd spec 2.5.1, Eq. 2.2-2.4): the position [m] of a particle at x
+/// with velocity v [m/s] after dt, on a straight line.
+[[gnu::always_inline]] inline Real flightPosition(Real x, Real v, Real dt) noexcept {
+    return x + v * dt;
+}
+
+/// Same under uniform gravity g [m/s^2] (a parabola): x + v dt + g dt^2/2, evaluated in exactly
+/// this order, (x + v dt) + ((g/2) dt) dt; the engine's checkpoints and regression runs depend on
+/// the rounding, so keep the expression as it is.
+[[gnu::always_inline]] inline Real flightPosition(Real x, Real v, Real g, Real dt) noexcept {
+    return x + v * dt + 0.5 * g * dt * dt;
+}
+
+/// Velocity [m/s] after a free flight of dt [s] under gravity g [m/s^2]: v + g dt.
+[[gnu::always_inline]] inline Real flightVelocity(Real v, Real g, Real dt) noexcept {
+    return v + g * dt;
+}
+
+/// The free flight of a whole particle over dt [s], componentwise as above: x [m] and v [m/s]
+/// are replaced by their values after dt. Without Gravity (g ignored) the velocity is unchanged
+/// and the position moves on a straight line.
+template <bool Gravity, int D>
+[[gnu::always_inline]] inline void freeFlight(VecD<D>& x, VecD<D>& v, const VecD<D>& g, Real dt) noexcept {
+    for (int k = 0; k < D; ++k) {
+        if constexpr (Gravity) {
+            x[k] = flightPosition(x[k], v[k], g[k], dt);
+            v[k] = flightVelocity(v[k], g[k], dt);
+        } else {
+            x[k] = flightPosition(x[k], v[k], dt);
+        }
+    }
+}
+
 /// Time until two spheres at relative position r12 = r1 - r2 with relative velocity v12 touch at
 /// contact distance s = a1 + a2 (edmd Eq. 2.18-2.19, robust form of spec 2.8): +inf if they
 /// separate or miss; 0 if they already overlap by round-off while approaching.
 template <int D>
-[[gnu::always_inline]] inline Real pairCollisionTime(const VecD<D>& r12, const VecD<D>& v12, Real s) noexcept {
+[[gnu::always_inline]] inline Real pairCollisionTime(const VecD<D>& r12, const VecD<D>& v12,
+                                                     Real s) noexcept {
     const Real b = dot(r12, v12);
     if (!(b < 0)) return kNoEvent;  // separating (also the pair that has just collided)
     const Real v2 = dot(v12, v12);
@@ -115,7 +149,7 @@ inline Real firstPassage(Real x, Real v, Real g, Real target) noexcept {
 /// velocity changes, momentum is conserved, energy loss m_red/2 (1 - eps^2) v_n^2.
 template <int D>
 void smoothCollision(VecD<D>& v1, VecD<D>& v2, Real m1, Real m2, const VecD<D>& k, Real eps) noexcept {
-    const Real vn = dot(v1 - v2, k);  // < 0 when approaching
+    const Real vn = dot(v1 - v2, k);                        // < 0 when approaching
     const Real j = (1 + eps) * vn * (m1 * m2 / (m1 + m2));  // impulse magnitude along -k on 1
     v1 = v1 - k * (j / m1);
     v2 = v2 + k * (j / m2);
@@ -153,8 +187,8 @@ inline void roughCollision(Vec3& v1, Vec3& v2, Vec3& w1, Vec3& w2, const Vec3& k
 /// a1^2/I1 + a2^2/I2. normalImpulse [kg m/s] is the normal impulse on particle 1 along k
 /// (computed by the caller, so that speed-dependent restitution and growing spheres enter
 /// there). Disks: vectors in the plane (z = 0), spins along z.
-inline void roughCollisionGeneral(Vec3& v1, Vec3& v2, Vec3& w1, Vec3& w2, const Vec3& k, Real a1, Real a2, Real m1,
-                                  Real m2, Real z, Real normalImpulse, Real phi) noexcept {
+inline void roughCollisionGeneral(Vec3& v1, Vec3& v2, Vec3& w1, Vec3& w2, const Vec3& k, Real a1, Real a2,
+                                  Real m1, Real m2, Real z, Real normalImpulse, Real phi) noexcept {
     const Vec3 v12 = v1 - v2;
     const Vec3 g = v12 + crossProduct(k, w1 * a1 + w2 * a2);
     const Vec3 gt = g - k * dot(g, k);

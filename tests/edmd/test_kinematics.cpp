@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Event times and collision rules of hard disks and spheres (edmd spec sections 2.5 and 2.8):
 // collision times against a brute-force root search, grazing and overlapping cases, growing
-// spheres, parabolic wall passages; collision rules conserve momentum and total (orbital + spin)
-// angular momentum, lose (m/4)(1 - eps^2) v_n^2, and conserve energy for eps = 1, phi = +-1.
+// spheres, parabolic wall passages; free flight in the engine's rounding order; collision rules
+// conserve momentum and total (orbital + spin) angular momentum, lose (m/4)(1 - eps^2) v_n^2,
+// and conserve energy for eps = 1, phi = +-1.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -45,7 +46,12 @@ TEST(EdmdKinematics, PairCollisionTimeMatchesRootSearch) {
         const Real s = rng.uniform(0.5, 1.5);
         if (dot(r, r) <= s * s) continue;
         const Real t = pairCollisionTime(r, v, s);
-        const Real ref = firstRoot([&](Real x) { const auto d = r + v * x; return dot(d, d) - s * s; }, 20.0);
+        const Real ref = firstRoot(
+            [&](Real x) {
+                const auto d = r + v * x;
+                return dot(d, d) - s * s;
+            },
+            20.0);
         if (std::isinf(ref)) {
             EXPECT_TRUE(std::isinf(t) || t > 20) << trial;
         } else {
@@ -60,7 +66,8 @@ TEST(EdmdKinematics, PairCollisionTimeMatchesRootSearch) {
     EXPECT_TRUE(std::isinf(pairCollisionTime(VecD<2>{{5, 1.0000001}}, VecD<2>{{-1, 0}}, 1.0)));
     // Far away and slow: no cancellation (c / (-b + sqrt(disc))).
     // (head on, the discriminant cancels to 1e-12 of b^2: the time keeps ~1e-11 relative)
-    EXPECT_NEAR(pairCollisionTime(VecD<2>{{1e6, 0}}, VecD<2>{{-1e-3, 0}}, 1.0), (1e6 - 1) / 1e-3, 1e-10 * 1e9);
+    EXPECT_NEAR(pairCollisionTime(VecD<2>{{1e6, 0}}, VecD<2>{{-1e-3, 0}}, 1.0), (1e6 - 1) / 1e-3,
+                1e-10 * 1e9);
 }
 
 TEST(EdmdKinematics, GrowingSpheresMeetAtTheSmallestNonNegativeRoot) {
@@ -76,10 +83,62 @@ TEST(EdmdKinematics, GrowingSpheresMeetAtTheSmallestNonNegativeRoot) {
         const Real s = 1.0, us = rng.uniform(-0.3, 0.3);
         if (dot(r, r) <= s * s) continue;
         const Real t = growingPairCollisionTime(r, v, s, us);
-        const Real ref = firstRoot([&](Real x) { const auto d = r + v * x; return dot(d, d) - (s + us * x) * (s + us * x); }, 3.0);
-        if (!std::isinf(ref)) EXPECT_NEAR(t, ref, 1e-9) << trial;
-        else EXPECT_TRUE(std::isinf(t) || t > 3 || s + us * t <= 0) << trial;
+        const Real ref = firstRoot(
+            [&](Real x) {
+                const auto d = r + v * x;
+                return dot(d, d) - (s + us * x) * (s + us * x);
+            },
+            3.0);
+        if (!std::isinf(ref))
+            EXPECT_NEAR(t, ref, 1e-9) << trial;
+        else
+            EXPECT_TRUE(std::isinf(t) || t > 3 || s + us * t <= 0) << trial;
     }
+}
+
+TEST(EdmdKinematics, FreeFlightIsTheLineOrTheParabolaInTheEnginesRoundingOrder) {
+    // Thrown up at 3 m/s under g = -9.81 from 0.5 m: apex at t = 3/9.81, height 0.5 + 9/19.62.
+    const Real tApex = 3 / 9.81;
+    EXPECT_NEAR(flightPosition(0.5, 3.0, -9.81, tApex), 0.5 + 9 / 19.62, 1e-14);
+    EXPECT_NEAR(flightVelocity(3.0, -9.81, tApex), 0.0, 1e-14);
+    EXPECT_EQ(flightPosition(0.5, 3.0, 0.0, 2.0), flightPosition(0.5, 3.0, 2.0));
+    EXPECT_EQ(flightPosition(0.5, 3.0, 2.0), 6.5);
+    EXPECT_EQ(flightVelocity(3.0, -9.81, 0.0), 3.0);
+    // The order is part of the contract (bit-identical runs): (x + v dt) + ((g/2) dt) dt.
+    CounterRng rng(8, 0);
+    for (int trial = 0; trial < 1000; ++trial) {
+        const Real x = rng.uniform(-10, 10), v = rng.uniform(-5, 5), g = rng.uniform(-20, 20),
+                   dt = rng.uniform(0, 3);
+        const Real line = x + v * dt;
+        EXPECT_EQ(flightPosition(x, v, dt), line);
+        EXPECT_EQ(flightPosition(x, v, g, dt), line + 0.5 * g * dt * dt);
+        EXPECT_EQ(flightVelocity(v, g, dt), v + g * dt);
+    }
+    // Whole particles: componentwise; two flights make one up to round-off.
+    VecD<3> x{{1, 2, 3}}, v{{0.5, -1, 2}};
+    const VecD<3> g{{0, 0, -9.81}};
+    VecD<3> xl = x, vl = v;
+    freeFlight<false>(xl, vl, g, 0.25);  // g ignored
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_EQ(xl[k], flightPosition(x[k], v[k], 0.25));
+        EXPECT_EQ(vl[k], v[k]);
+    }
+    VecD<3> xp = x, vp = v;
+    freeFlight<true>(xp, vp, g, 0.25);
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_EQ(xp[k], flightPosition(x[k], v[k], g[k], 0.25));
+        EXPECT_EQ(vp[k], flightVelocity(v[k], g[k], 0.25));
+    }
+    freeFlight<true>(xp, vp, g, 0.5);
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_NEAR(xp[k], x[k] + v[k] * 0.75 + 0.5 * g[k] * 0.75 * 0.75, 1e-14);
+        EXPECT_NEAR(vp[k], v[k] + g[k] * 0.75, 1e-14);
+    }
+    VecD<2> x2{{1, 2}}, v2{{3, 4}};
+    freeFlight<true>(x2, v2, VecD<2>{{0, -1}}, 2.0);
+    EXPECT_EQ(x2[0], 7.0);
+    EXPECT_EQ(x2[1], 8.0);
+    EXPECT_EQ(v2[1], 2.0);
 }
 
 TEST(EdmdKinematics, FirstPassageUnderGravity) {
@@ -99,7 +158,8 @@ TEST(EdmdKinematics, FirstPassageUnderGravity) {
 TEST(EdmdKinematics, SmoothCollisionConservesMomentumAndLosesTheRightEnergy) {
     CounterRng rng(5, 0);
     for (int trial = 0; trial < 100; ++trial) {
-        VecD<3> v1{{rng.normal(), rng.normal(), rng.normal()}}, v2{{rng.normal(), rng.normal(), rng.normal()}};
+        VecD<3> v1{{rng.normal(), rng.normal(), rng.normal()}},
+            v2{{rng.normal(), rng.normal(), rng.normal()}};
         VecD<3> k{{rng.normal(), rng.normal(), rng.normal()}};
         k = k * (1 / std::sqrt(dot(k, k)));
         if (dot(v1 - v2, k) >= 0) k = k * -1.0;  // approaching
@@ -123,7 +183,8 @@ TEST(EdmdKinematics, RoughCollisionConservesAngularMomentumAndEnergyAtTheLimits)
         for (int trial = 0; trial < 100; ++trial) {
             Vec3 k{{rng.normal(), rng.normal(), z == 0.5 ? 0.0 : rng.normal()}};
             k = k * (1 / std::sqrt(dot(k, k)));
-            Vec3 v1{{rng.normal(), rng.normal(), z == 0.5 ? 0.0 : rng.normal()}}, v2{{rng.normal(), rng.normal(), z == 0.5 ? 0.0 : rng.normal()}};
+            Vec3 v1{{rng.normal(), rng.normal(), z == 0.5 ? 0.0 : rng.normal()}},
+                v2{{rng.normal(), rng.normal(), z == 0.5 ? 0.0 : rng.normal()}};
             Vec3 w1{{z == 0.5 ? 0.0 : rng.normal(), z == 0.5 ? 0.0 : rng.normal(), rng.normal()}};
             Vec3 w2{{z == 0.5 ? 0.0 : rng.normal(), z == 0.5 ? 0.0 : rng.normal(), rng.normal()}};
             if (dot(v1 - v2, k) >= 0) k = k * -1.0;
@@ -132,7 +193,9 @@ TEST(EdmdKinematics, RoughCollisionConservesAngularMomentumAndEnergyAtTheLimits)
             const auto angular = [&] {
                 return crossProduct(r1, v1) * m + crossProduct(r2, v2) * m + (w1 + w2) * I;
             };
-            const auto energy = [&] { return 0.5 * m * (dot(v1, v1) + dot(v2, v2)) + 0.5 * I * (dot(w1, w1) + dot(w2, w2)); };
+            const auto energy = [&] {
+                return 0.5 * m * (dot(v1, v1) + dot(v2, v2)) + 0.5 * I * (dot(w1, w1) + dot(w2, w2));
+            };
             const Real eps = trial % 3 == 0 ? 1.0 : rng.uniform(0, 1);
             const Real phi = trial % 2 == 0 ? (trial % 4 == 0 ? 1.0 : -1.0) : rng.uniform(-1, 1);
             const Vec3 L0 = angular();
@@ -140,8 +203,10 @@ TEST(EdmdKinematics, RoughCollisionConservesAngularMomentumAndEnergyAtTheLimits)
             roughCollision(v1, v2, w1, w2, k, a, eps, phi, z);
             const Vec3 dL = angular() - L0;
             EXPECT_LT(std::sqrt(dot(dL, dL)), 1e-13) << "z " << z << " trial " << trial;
-            if (eps == 1.0 && (phi == 1.0 || phi == -1.0)) EXPECT_NEAR(energy(), E0, 1e-13 * E0) << trial;
-            else EXPECT_LE(energy(), E0 * (1 + 1e-14)) << trial;
+            if (eps == 1.0 && (phi == 1.0 || phi == -1.0))
+                EXPECT_NEAR(energy(), E0, 1e-13 * E0) << trial;
+            else
+                EXPECT_LE(energy(), E0 * (1 + 1e-14)) << trial;
         }
     }
 }
@@ -162,12 +227,14 @@ TEST(EdmdKinematics, ClosingTimeIsTheSmallestPositiveRoot) {
             }
         }
         if (k > 300) break;  // the grid search is slow; a few hundred cases suffice
-        if (reference == kNoEvent) EXPECT_TRUE(t == kNoEvent || t > 10 - 1e-4) << s << " " << u << " " << gw;
-        else EXPECT_NEAR(t, reference, 10.0 / steps) << s << " " << u << " " << gw;
+        if (reference == kNoEvent)
+            EXPECT_TRUE(t == kNoEvent || t > 10 - 1e-4) << s << " " << u << " " << gw;
+        else
+            EXPECT_NEAR(t, reference, 10.0 / steps) << s << " " << u << " " << gw;
     }
-    EXPECT_EQ(closingTime(0, 1, 0), 0);          // touching and closing: now
-    EXPECT_EQ(closingTime(0, -1, 0), kNoEvent);  // touching and opening: never
-    EXPECT_EQ(closingTime(0, 0, 0), kNoEvent);   // at rest on the plane without gravity: never
+    EXPECT_EQ(closingTime(0, 1, 0), 0);                   // touching and closing: now
+    EXPECT_EQ(closingTime(0, -1, 0), kNoEvent);           // touching and opening: never
+    EXPECT_EQ(closingTime(0, 0, 0), kNoEvent);            // at rest on the plane without gravity: never
     EXPECT_NEAR(closingTime(-1e-15, -1, 2), 1.0, 1e-12);  // opening, gravity brings it back
 }
 
@@ -192,7 +259,8 @@ TEST(EdmdKinematics, GeneralRoughRuleMatchesTheEqualSphereRuleAndConservesAngula
         }
         // Unequal spheres: angular momentum about the contact point and momentum conserved;
         // eps = 1, phi = 1 conserves energy.
-        const Real a1 = rng.uniform(0.1, 1), a2 = rng.uniform(0.1, 1), m1 = rng.uniform(0.5, 3), m2 = rng.uniform(0.5, 3);
+        const Real a1 = rng.uniform(0.1, 1), a2 = rng.uniform(0.1, 1), m1 = rng.uniform(0.5, 3),
+                   m2 = rng.uniform(0.5, 3);
         const Vec3 r1 = n * a1, r2 = n * (-a2);  // centres relative to the contact point
         Vec3 p1 = randomVec(), p2 = randomVec(), s1 = randomVec(), s2 = randomVec();
         if (dot(p1 - p2, n) > 0) std::swap(p1, p2);
@@ -212,7 +280,9 @@ TEST(EdmdKinematics, GeneralRoughRuleMatchesTheEqualSphereRuleAndConservesAngula
         roughCollisionGeneral(p1, p2, s1, s2, n, a1, a2, m1, m2, z, j, f);
         const Vec3 L1 = angular();
         for (int d = 0; d < 3; ++d) EXPECT_NEAR(L1[d], L0[d], 1e-12 * (1 + std::abs(L0[d])));
-        if (conservative) EXPECT_NEAR(energy(), E0, 1e-12 * E0);
-        else EXPECT_LE(energy(), E0 * (1 + 1e-12));
+        if (conservative)
+            EXPECT_NEAR(energy(), E0, 1e-12 * E0);
+        else
+            EXPECT_LE(energy(), E0 * (1 + 1e-12));
     }
 }
