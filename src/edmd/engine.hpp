@@ -122,8 +122,8 @@ private:
     /// What the event computation reads of every neighbour, one cache line for spheres (random
     /// access per neighbour dominates the cost; spec 2.2's ParticleState). Indexed by slot:
     /// particles are kept in cell order (re-sorted every kSortEvery N events) so that the
-    /// particles of neighbouring cells lie close in memory; m_id/m_slot map slots and the
-    /// caller's particle indices.
+    /// particles of neighbouring cells lie close in memory; m_slot maps the caller's particle
+    /// indices to slots.
     struct alignas(D == 3 ? 64 : 16) State {
         V x;                         ///< [m] position at t_st
         V v;                         ///< [m/s] velocity at t_st
