@@ -6,6 +6,7 @@
 //   BM_WorldStep/N                       one World::step on a settled-ish bed of N disks.
 // items/s is particles per second of one rebuild, or particle-steps/s for the step.
 #include <benchmark/benchmark.h>
+#include <fmt/format.h>
 
 #include <cmath>
 #include <cstdint>
@@ -16,15 +17,13 @@
 #include <string>
 #include <vector>
 
-#include <fmt/format.h>
-
+#include "app/dem/dem_engine.hpp"
 #include "app/engine_table.hpp"
 #include "dem/broad_phase.hpp"
 #include "dem/neighbor_list.hpp"
 #include "dem/setup.hpp"
 #include "dem/world.hpp"
 #include "io/scene_reader.hpp"
-#include "app/dem/dem_engine.hpp"
 
 namespace {
 
@@ -62,7 +61,8 @@ const dem::World& randomSet(std::int64_t n) {
     auto& w = cache[n];
     if (!w) {
         const double rmin = 0.3, rmax = 0.7, phi = 0.4;
-        const double meanArea = std::numbers::pi * (rmax * rmax * rmax - rmin * rmin * rmin) / (3 * (rmax - rmin));
+        const double meanArea =
+            std::numbers::pi * (rmax * rmax * rmax - rmin * rmin * rmin) / (3 * (rmax - rmin));
         const double side = std::sqrt(static_cast<double>(n) * meanArea / phi);
         w = worldFromText(fmt::format(R"(
 [run]
@@ -96,7 +96,8 @@ void BM_NeighborRebuild(benchmark::State& state, const std::string& broadName) {
     dem::NeighborList list;
     const std::vector<std::uint32_t> noPermutation;
     for (auto _ : state) {
-        list.rebuild(world.store(), world.walls(), world.config().skin, 0.0, *broad, world.laws(), noPermutation, false);
+        list.rebuild(world.store(), world.walls(), world.config().skin, 0.0, *broad, world.laws(),
+                     noPermutation, false);
         benchmark::DoNotOptimize(list.pairs.first.data());
         benchmark::ClobberMemory();
     }
@@ -104,9 +105,13 @@ void BM_NeighborRebuild(benchmark::State& state, const std::string& broadName) {
     state.counters["pairs/particle"] = static_cast<double>(list.pairs.size()) / static_cast<double>(n);
 }
 BENCHMARK_CAPTURE(BM_NeighborRebuild, cell_grid, std::string("cell_grid"))
-    ->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
+    ->Arg(1000)
+    ->Arg(10000)
+    ->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_NeighborRebuild, brute_force, std::string("brute_force"))
-    ->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
+    ->Arg(1000)
+    ->Arg(10000)
+    ->Unit(benchmark::kMicrosecond);
 
 /// The broad phase alone (BroadPhase::findPairs), to separate it from the history sync.
 void BM_FindPairs(benchmark::State& state, const std::string& broadName) {
@@ -123,9 +128,13 @@ void BM_FindPairs(benchmark::State& state, const std::string& broadName) {
     state.counters["pairs/particle"] = static_cast<double>(pairs.size()) / static_cast<double>(n);
 }
 BENCHMARK_CAPTURE(BM_FindPairs, cell_grid, std::string("cell_grid"))
-    ->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
+    ->Arg(1000)
+    ->Arg(10000)
+    ->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_FindPairs, brute_force, std::string("brute_force"))
-    ->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
+    ->Arg(1000)
+    ->Arg(10000)
+    ->Unit(benchmark::kMicrosecond);
 
 /// A settled-ish bed: NX x NX disks on a hexagonal lattice of spacing 1.0 with radii uniform in
 /// [0.48, 0.5] (gaps <= 0.04, so the neighbour lists are bed-like from the start) in a box under
@@ -183,8 +192,10 @@ void BM_WorldStep(benchmark::State& state) {
     }
     state.SetItemsProcessed(state.iterations() * n);  // particle-steps
     state.counters["particles"] = static_cast<double>(n);
-    state.counters["contacts/particle"] = static_cast<double>(world.forceStats().contacts) / static_cast<double>(n);
-    state.counters["pairs/particle"] = static_cast<double>(world.neighbors().pairs.size()) / static_cast<double>(n);
+    state.counters["contacts/particle"] =
+        static_cast<double>(world.forceStats().contacts) / static_cast<double>(n);
+    state.counters["pairs/particle"] =
+        static_cast<double>(world.neighbors().pairs.size()) / static_cast<double>(n);
 }
 BENCHMARK(BM_WorldStep)->Arg(100)->ArgName("nx")->Unit(benchmark::kMicrosecond);  // 100 x 100 = 1e4 disks
 

@@ -51,7 +51,8 @@ Engine<D, Queue> latticeGas(std::int64_t target, Real fraction, std::uint64_t se
     }
     for (auto& u : v) u = u - mean * (1.0 / static_cast<Real>(count));
     EngineConfig c;
-    return Engine<D, Queue>(c, std::move(x), std::move(v), std::vector<Real>(count, a), std::vector<Real>(count, 1.0));
+    return Engine<D, Queue>(c, std::move(x), std::move(v), std::vector<Real>(count, a),
+                            std::vector<Real>(count, 1.0));
 }
 
 double peakRssMiB() {
@@ -61,16 +62,21 @@ double peakRssMiB() {
 }
 
 template <int D, class Queue>
-void report(benchmark::State& state, const Engine<D, Queue>& e, std::uint64_t collisions, std::uint64_t events) {
-    state.counters["collisions/s"] = benchmark::Counter(static_cast<double>(collisions), benchmark::Counter::kIsRate);
+void report(benchmark::State& state, const Engine<D, Queue>& e, std::uint64_t collisions,
+            std::uint64_t events) {
+    state.counters["collisions/s"] =
+        benchmark::Counter(static_cast<double>(collisions), benchmark::Counter::kIsRate);
     state.counters["events/s"] = benchmark::Counter(static_cast<double>(events), benchmark::Counter::kIsRate);
     state.counters["bytes/particle"] = static_cast<double>(e.memoryBytes()) / e.size();
     state.counters["N"] = e.size();
-    state.counters["events/collision"] = collisions ? static_cast<double>(events) / static_cast<double>(collisions) : 0;
+    state.counters["events/collision"] =
+        collisions ? static_cast<double>(events) / static_cast<double>(collisions) : 0;
     state.counters["peak_rss_MiB"] = peakRssMiB();
     const auto& st = e.stats();  // over the whole run, equilibration included
-    state.counters["crossings/collision"] = static_cast<double>(st.cellCrossings) / static_cast<double>(st.collisions);
-    state.counters["annulled/collision"] = static_cast<double>(st.annulled) / static_cast<double>(st.collisions);
+    state.counters["crossings/collision"] =
+        static_cast<double>(st.cellCrossings) / static_cast<double>(st.collisions);
+    state.counters["annulled/collision"] =
+        static_cast<double>(st.annulled) / static_cast<double>(st.collisions);
 }
 
 }  // namespace
@@ -86,9 +92,18 @@ static void BM_EdmdDense(benchmark::State& state) {
     report(state, e, e.stats().collisions - c0, e.stats().events - e0);
 }
 BENCHMARK_TEMPLATE(BM_EdmdDense, CalendarQueue)
-    ->Args({45, 32768})->Args({30, 32768})->Iterations(3)->Unit(benchmark::kMillisecond);
-BENCHMARK_TEMPLATE(BM_EdmdDense, AddressableHeap)->Args({45, 32768})->Iterations(3)->Unit(benchmark::kMillisecond);
-BENCHMARK_TEMPLATE(BM_EdmdDense, TournamentTree)->Args({45, 32768})->Iterations(3)->Unit(benchmark::kMillisecond);
+    ->Args({45, 32768})
+    ->Args({30, 32768})
+    ->Iterations(3)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_EdmdDense, AddressableHeap)
+    ->Args({45, 32768})
+    ->Iterations(3)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_EdmdDense, TournamentTree)
+    ->Args({45, 32768})
+    ->Iterations(3)
+    ->Unit(benchmark::kMillisecond);
 
 /// Target 2 of issue 5: events/s versus N at fraction 0.25, D = arg(0), N = arg(1); melted for
 /// 2 collisions per particle (at least 2e5), then 2 x 2e6 events timed.
@@ -106,10 +121,15 @@ static void BM_EdmdScalingD(benchmark::State& state) {
     report(state, e, e.stats().collisions - c0, e.stats().events - e0);
 }
 static void BM_EdmdScaling(benchmark::State& state) {
-    if (state.range(0) == 2) BM_EdmdScalingD<2>(state);
-    else BM_EdmdScalingD<3>(state);
+    if (state.range(0) == 2)
+        BM_EdmdScalingD<2>(state);
+    else
+        BM_EdmdScalingD<3>(state);
 }
-BENCHMARK(BM_EdmdScaling)->ArgsProduct({{3, 2}, {10000, 100000}})->Iterations(2)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_EdmdScaling)
+    ->ArgsProduct({{3, 2}, {10000, 100000}})
+    ->Iterations(2)
+    ->Unit(benchmark::kMillisecond);
 // N = 1e6 and 1e7 (about 2 GB and several minutes) only with GRANULAB_BENCH_LARGE=1 in the
 // environment, so that --benchmark_filter=Edmd stays fast.
 static const bool kLargeRegistered = [] {

@@ -2,25 +2,26 @@
 // Test helpers: build a World from a TOML string through the real reader/validator, run the
 // granulab binary, temporary folders.
 #pragma once
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 
-#include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
+#include "app/dem/dem_engine.hpp"
 #include "dem/setup.hpp"
 #include "io/scene_reader.hpp"
-#include "app/dem/dem_engine.hpp"
 #include "model/material_names.hpp"
 #include "support/scene.hpp"
 
 namespace granulab::test {
 
-inline dem::World makeWorldFromToml(const std::string& toml, const std::vector<io::Override>& overrides = {}) {
+inline dem::World makeWorldFromToml(const std::string& toml,
+                                    const std::vector<io::Override>& overrides = {}) {
     const model::SceneDef scene = readSceneText(toml, "test.toml", overrides);
     const dem::PreparedScene v = app::checkAndPrepareDem(scene);
     dem::World w = dem::makeWorld(scene, v.initial);
@@ -34,9 +35,9 @@ struct ScratchDir {
     std::filesystem::path path;
     ScratchDir() {
         const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        path = std::filesystem::temp_directory_path() /
-               (std::string("granulab_") + info->test_suite_name() + "_" + info->name() + "_" +
-                std::to_string(::getpid()));
+        path =
+            std::filesystem::temp_directory_path() / (std::string("granulab_") + info->test_suite_name() +
+                                                      "_" + info->name() + "_" + std::to_string(::getpid()));
         std::filesystem::remove_all(path);
         std::filesystem::create_directories(path);
     }
@@ -68,8 +69,8 @@ struct CommandResult {
 /// Runs the granulab binary with `args` (a shell fragment).
 inline CommandResult runGranulab(const std::string& args, const std::filesystem::path& workDir) {
     const auto log = workDir / "command.log";
-    const std::string cmd = std::string("cd '") + workDir.string() + "' && '" + GRANULAB_BINARY + "' " + args + " > '" +
-                            log.string() + "' 2>&1";
+    const std::string cmd = std::string("cd '") + workDir.string() + "' && '" + GRANULAB_BINARY + "' " +
+                            args + " > '" + log.string() + "' 2>&1";
     const int raw = std::system(cmd.c_str());
     CommandResult r;
     r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;

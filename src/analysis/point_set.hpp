@@ -12,8 +12,8 @@
 namespace granulab::analysis {
 
 struct PointSet {
-    int dim = 3;                               ///< 2 (disks) or 3 (spheres)
-    std::array<Real, 3> box{1, 1, 1};          ///< [m] box edge per axis (origin at 0); unused axes ignored
+    int dim = 3;                       ///< 2 (disks) or 3 (spheres)
+    std::array<Real, 3> box{1, 1, 1};  ///< [m] box edge per axis (origin at 0); unused axes ignored
     std::array<bool, 3> periodic{true, true, true};  ///< periodic axes use the minimum image
     std::vector<Real> x;       ///< [m] positions, dim values per particle, inside [0, box)
     std::vector<Real> v;       ///< [m/s] velocities, dim values per particle (may be empty)

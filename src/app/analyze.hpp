@@ -10,9 +10,9 @@ namespace granulab::app {
 
 struct AnalyzeOptions {
     std::string dir;
-    double rMaxRadii = 10;     ///< g(r) range in radii
-    int bins = 200;            ///< g(r) bins
-    double delta = 0.1;        ///< cluster criterion delta/2a
+    double rMaxRadii = 10;        ///< g(r) range in radii
+    int bins = 200;               ///< g(r) bins
+    double delta = 0.1;           ///< cluster criterion delta/2a
     double particlesPerBin = 40;  ///< density coarse-graining
     bool quiet = false;
 };
@@ -24,8 +24,8 @@ int analyzeCommand(const AnalyzeOptions& options);
 
 struct MasterEquationOptions {
     analysis::MasterEquationParams params;
-    double tEnd = 10;          ///< end time (units of 1/alpha0)
-    int points = 50;           ///< output times, logarithmic from tEnd/1e4
+    double tEnd = 10;                     ///< end time (units of 1/alpha0)
+    int points = 50;                      ///< output times, logarithmic from tEnd/1e4
     std::string out = "master_equation";  ///< output prefix: PREFIX_moments.csv, PREFIX_distributions.csv
 };
 

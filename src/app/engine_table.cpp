@@ -15,10 +15,11 @@ namespace granulab::app {
 
 const std::vector<EngineEntry>& engineTable() {
     static const std::vector<EngineEntry> table = {
-        {"dem", "time-driven soft-particle DEM in 2D: disks and convex polygons (gc2d, cfddem)", io::demSceneSections,
-         makeDemSimulation, demInfo, nullptr, "stress, density and repose analyses of dem runs come with a later version"},
-        {"edmd", "event-driven MD of inelastic hard disks and spheres (edmd)", io::edmdSceneSections, makeEdmdSimulation,
-         edmdInfo, edmdAnalyze, ""},
+        {"dem", "time-driven soft-particle DEM in 2D: disks and convex polygons (gc2d, cfddem)",
+         io::demSceneSections, makeDemSimulation, demInfo, nullptr,
+         "stress, density and repose analyses of dem runs come with a later version"},
+        {"edmd", "event-driven MD of inelastic hard disks and spheres (edmd)", io::edmdSceneSections,
+         makeEdmdSimulation, edmdInfo, edmdAnalyze, ""},
     };
     return table;
 }
@@ -37,8 +38,9 @@ std::string engineNamesText() {
 
 const EngineEntry& engineOf(const model::SceneDef& scene) {
     if (const EngineEntry* e = findEngine(scene.run.engine)) return *e;
-    throw SceneError(makeDiagnostic(scene.run.loc.file, scene.run.loc.line, "run.engine",
-                                    fmt::format("unknown engine '{}'; allowed: {}", scene.run.engine, engineNamesText())));
+    throw SceneError(
+        makeDiagnostic(scene.run.loc.file, scene.run.loc.line, "run.engine",
+                       fmt::format("unknown engine '{}'; allowed: {}", scene.run.engine, engineNamesText())));
 }
 
 namespace {
@@ -53,7 +55,8 @@ model::SceneDef readScene(const std::string& path, const std::vector<io::Overrid
     return io::readScene(path, overrides, sectionReaders());
 }
 
-model::SceneDef readSceneText(const std::string& text, const std::string& path, const std::vector<io::Override>& overrides) {
+model::SceneDef readSceneText(const std::string& text, const std::string& path,
+                              const std::vector<io::Override>& overrides) {
     return io::readSceneText(text, path, overrides, sectionReaders());
 }
 

@@ -4,10 +4,9 @@
 // engine recorded in summary.json) and call its row; nothing else compares engine names.
 #pragma once
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "app/analyze.hpp"
 #include "app/simulation.hpp"

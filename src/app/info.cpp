@@ -2,9 +2,10 @@
 // `granulab info` (dispatched through the engine table) and the help texts.
 #include "app/info.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "app/engine_table.hpp"
 #include "dem/contact/hertz_restitution.hpp"
@@ -37,8 +38,8 @@ std::string helpText(const std::string& topic) {
         for (const auto& e : dem::lawRegistry()) {
             s += fmt::format("\n  {} = \"{}\": {}\n", dem::axisKey(e.axis), e.keyword, e.doc);
             for (const auto& p : e.params)
-                s += fmt::format("      {:<10} [{}] {}; allowed {}; default {}\n", p.key, p.unit, p.doc, p.rangeText(),
-                                 p.defaultText);
+                s += fmt::format("      {:<10} [{}] {}; allowed {}; default {}\n", p.key, p.unit, p.doc,
+                                 p.rangeText(), p.defaultText);
         }
         s += "\n  any law:\n";
         for (const auto& p : dem::commonLawParams())

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: MIT
 // granulab command line (CLI11): run, info, analyze, render, master-equation, help, --version.
 // Maps errors to exit codes (app/exit_codes.hpp): 2 bad input, 3 unstable run, 1 anything else.
+#include <fmt/format.h>
+
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
-#include <fmt/format.h>
 
 #include "app/analyze.hpp"
 #include "app/info.hpp"
@@ -45,23 +46,32 @@ int main(int argc, char** argv) {
     render->add_flag("--quiet,-q", renderQuiet, "no messages");
 
     app::AnalyzeOptions analyzeOpt;
-    auto* analyze = cli.add_subcommand("analyze", "measure an edmd output folder: g(r), p(v), density, clusters, tau_p");
+    auto* analyze =
+        cli.add_subcommand("analyze", "measure an edmd output folder: g(r), p(v), density, clusters, tau_p");
     analyze->add_option("dir", analyzeOpt.dir, "output folder of an edmd run")->required();
-    analyze->add_option("--rmax", analyzeOpt.rMaxRadii, "g(r) range in particle radii")->check(CLI::Range(2.5, 1e6));
+    analyze->add_option("--rmax", analyzeOpt.rMaxRadii, "g(r) range in particle radii")
+        ->check(CLI::Range(2.5, 1e6));
     analyze->add_option("--bins", analyzeOpt.bins, "g(r) bins")->check(CLI::Range(4, 1000000));
-    analyze->add_option("--delta", analyzeOpt.delta, "cluster criterion delta/2a (edmd Eq. 5.11)")->check(CLI::Range(1e-6, 1.0));
-    analyze->add_option("--per-bin", analyzeOpt.particlesPerBin, "particles per density bin")->check(CLI::Range(1.0, 1e9));
+    analyze->add_option("--delta", analyzeOpt.delta, "cluster criterion delta/2a (edmd Eq. 5.11)")
+        ->check(CLI::Range(1e-6, 1.0));
+    analyze->add_option("--per-bin", analyzeOpt.particlesPerBin, "particles per density bin")
+        ->check(CLI::Range(1.0, 1e9));
     analyze->add_flag("--quiet,-q", analyzeOpt.quiet, "no summary on the terminal");
 
     app::MasterEquationOptions meOpt;
-    auto* master = cli.add_subcommand("master-equation", "integrate the cluster-population master equation (edmd Eq. 5.31)");
-    master->add_option("--smax", meOpt.params.maxSize, "largest cluster size tracked")->check(CLI::Range(2, 100000));
-    master->add_option("--dim", meOpt.params.dim, "dimension D in the surface factor")->check(CLI::IsMember({2, 3}));
+    auto* master = cli.add_subcommand("master-equation",
+                                      "integrate the cluster-population master equation (edmd Eq. 5.31)");
+    master->add_option("--smax", meOpt.params.maxSize, "largest cluster size tracked")
+        ->check(CLI::Range(2, 100000));
+    master->add_option("--dim", meOpt.params.dim, "dimension D in the surface factor")
+        ->check(CLI::IsMember({2, 3}));
     master->add_option("--alpha0", meOpt.params.alpha0, "merging prefactor")->check(CLI::PositiveNumber);
-    master->add_option("--beta0", meOpt.params.beta0, "fragmentation prefactor")->check(CLI::NonNegativeNumber);
+    master->add_option("--beta0", meOpt.params.beta0, "fragmentation prefactor")
+        ->check(CLI::NonNegativeNumber);
     master->add_option("--lambda", meOpt.params.lambda, "dissipation 1 - eps^2")->check(CLI::PositiveNumber);
     master->add_option("--xi", meOpt.params.xi, "fragment exponent xi")->check(CLI::PositiveNumber);
-    master->add_flag("--symmetric", meOpt.params.symmetricGain, "symmetric Smoluchowski form (1/2 in the gain term)");
+    master->add_flag("--symmetric", meOpt.params.symmetricGain,
+                     "symmetric Smoluchowski form (1/2 in the gain term)");
     master->add_option("--t-end", meOpt.tEnd, "end time [1/alpha0]")->check(CLI::PositiveNumber);
     master->add_option("--points", meOpt.points, "output times (logarithmic)")->check(CLI::Range(2, 100000));
     master->add_option("--out", meOpt.out, "output prefix");

@@ -2,10 +2,11 @@
 // Progress bar / periodic log lines.
 #include "app/progress.hpp"
 
-#include <algorithm>
-#include <cstdio>
 #include <fmt/format.h>
 #include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
 
 #include "core/timer.hpp"
 
@@ -21,7 +22,13 @@ std::string clock(double seconds) {
 }  // namespace
 
 Progress::Progress(double end, bool quiet, std::string unit, bool byCount)
-    : m_endTime(end), m_unit(std::move(unit)), m_byCount(byCount), m_quiet(quiet), m_tty(isatty(fileno(stderr)) != 0), m_start(wallSeconds()), m_last(m_start) {}
+    : m_endTime(end),
+      m_unit(std::move(unit)),
+      m_byCount(byCount),
+      m_quiet(quiet),
+      m_tty(isatty(fileno(stderr)) != 0),
+      m_start(wallSeconds()),
+      m_last(m_start) {}
 
 void Progress::update(double simTime, std::int64_t steps) {
     if (m_quiet || steps < m_nextCheck) return;
@@ -56,14 +63,15 @@ void Progress::print(double simTime, std::int64_t steps, bool final) {
         const int filled = static_cast<int>(done * kWidth);
         std::string bar(static_cast<std::size_t>(filled), '=');
         if (filled < kWidth) bar += '>' + std::string(static_cast<std::size_t>(kWidth - filled - 1), ' ');
-        std::fprintf(stderr, "\r[%s] %s%.4g / %.4g%s  %.3g %s/s  %s %s ", bar.c_str(), m_byCount ? "" : "t = ", simTime, m_endTime, m_byCount ? "" : " s", rate, m_unit.c_str(),
+        std::fprintf(stderr, "\r[%s] %s%.4g / %.4g%s  %.3g %s/s  %s %s ", bar.c_str(),
+                     m_byCount ? "" : "t = ", simTime, m_endTime, m_byCount ? "" : " s", rate, m_unit.c_str(),
                      final ? "elapsed" : "ETA", clock(final ? elapsed : eta).c_str());
         if (final) std::fputc('\n', stderr);
     } else {
-        std::fprintf(stderr, "progress: %s%.6g / %.6g%s (%.1f %%), %lld %s, %.3g %s/s, %s %s\n", m_byCount ? "" : "t = ", simTime,
-                     m_endTime, m_byCount ? "" : " s",
-                     100 * done, static_cast<long long>(steps), m_unit.c_str(), rate, m_unit.c_str(), final ? "elapsed" : "ETA",
-                     clock(final ? elapsed : eta).c_str());
+        std::fprintf(stderr, "progress: %s%.6g / %.6g%s (%.1f %%), %lld %s, %.3g %s/s, %s %s\n",
+                     m_byCount ? "" : "t = ", simTime, m_endTime, m_byCount ? "" : " s", 100 * done,
+                     static_cast<long long>(steps), m_unit.c_str(), rate, m_unit.c_str(),
+                     final ? "elapsed" : "ETA", clock(final ? elapsed : eta).c_str());
     }
     std::fflush(stderr);
 }

@@ -4,6 +4,9 @@
 // the second draws; only one frame is held in memory at a time.
 #include "app/render.hpp"
 
+#include <cairo.h>
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <charconv>
@@ -13,9 +16,6 @@
 #include <limits>
 #include <stdexcept>
 #include <vector>
-
-#include <cairo.h>
-#include <fmt/format.h>
 
 #include "io/vtk_reader.hpp"
 
@@ -33,9 +33,15 @@ struct Rgb {
 };
 
 /// matplotlib's viridis at 9 equally spaced stops; linear in between.
-constexpr std::array<std::array<int, 3>, 9> kViridis{{{68, 1, 84}, {71, 45, 123}, {59, 82, 139},
-                                                      {44, 114, 142}, {33, 145, 140}, {40, 174, 128},
-                                                      {94, 201, 98}, {173, 220, 48}, {253, 231, 37}}};
+constexpr std::array<std::array<int, 3>, 9> kViridis{{{68, 1, 84},
+                                                      {71, 45, 123},
+                                                      {59, 82, 139},
+                                                      {44, 114, 142},
+                                                      {33, 145, 140},
+                                                      {40, 174, 128},
+                                                      {94, 201, 98},
+                                                      {173, 220, 48},
+                                                      {253, 231, 37}}};
 
 Rgb viridis(double t) {
     t = std::clamp(std::isfinite(t) ? t : 0.0, 0.0, 1.0) * (kViridis.size() - 1);
@@ -45,7 +51,9 @@ Rgb viridis(double t) {
     return {channel(0), channel(1), channel(2)};
 }
 
-double wallLineWidth(int widthPixels) { return std::max(3.0, widthPixels / 250.0); }  // [px]
+double wallLineWidth(int widthPixels) {
+    return std::max(3.0, widthPixels / 250.0);
+}  // [px]
 
 /// One snapshot: particle file and (optional) wall file of the same time.
 struct Snapshot {
@@ -97,7 +105,8 @@ Extent scanExtent(const std::vector<Snapshot>& snaps) {
         const io::ParticleFrame f = io::readParticlesVtp(s.particles.string());
         for (std::size_t i = 0; i < f.x.size(); ++i) {
             if (f.isPolygon(i))
-                for (std::size_t c = f.cornerStart[i]; c < f.cornerStart[i + 1]; ++c) ext.add(f.corners[c], 0);
+                for (std::size_t c = f.cornerStart[i]; c < f.cornerStart[i + 1]; ++c)
+                    ext.add(f.corners[c], 0);
             else
                 ext.add({f.x[i], f.y[i]}, f.radius[i]);
             if (std::isfinite(f.speed[i])) ext.maxSpeed = std::max(ext.maxSpeed, f.speed[i]);
@@ -122,7 +131,9 @@ int timeDecimals(const std::vector<Snapshot>& snaps) {
     return std::min(decimals, 9);
 }
 
-void setColour(cairo_t* cr, Rgb c) { cairo_set_source_rgb(cr, c.r, c.g, c.b); }
+void setColour(cairo_t* cr, Rgb c) {
+    cairo_set_source_rgb(cr, c.r, c.g, c.b);
+}
 
 constexpr Rgb kDark{0.12, 0.12, 0.14};
 
@@ -139,7 +150,7 @@ void drawPolygon(cairo_t* cr, const RenderLayout& L, const io::ParticleFrame& f,
     cairo_close_path(cr);
     setColour(cr, fill);
     const double r = f.radius[i] * L.scale;  // [px] circumradius
-    if (r < 1.5) {  // too small for an outline
+    if (r < 1.5) {                           // too small for an outline
         cairo_fill(cr);
         return;
     }

@@ -2,8 +2,9 @@
 // `granulab run` (app/run.hpp): scene -> engine table -> Simulation -> run loop.
 #include "app/run.hpp"
 
-#include <filesystem>
 #include <fmt/format.h>
+
+#include <filesystem>
 
 #include "app/engine_table.hpp"
 #include "app/run_loop.hpp"
@@ -23,7 +24,9 @@ int runCommand(const RunOptions& opt) {
     const EngineEntry& engine = engineOf(scene);
     const std::unique_ptr<Simulation> sim = engine.build(scene, {opt.scene, opt.quiet});
     for (const auto& w : sim->warnings()) fmt::print(stderr, "warning: {}\n", w);
-    const std::string dir = !opt.outDir.empty() ? opt.outDir : (!opt.resumeDir.empty() ? opt.resumeDir : defaultOutDir(opt.scene));
+    const std::string dir = !opt.outDir.empty()
+                                ? opt.outDir
+                                : (!opt.resumeDir.empty() ? opt.resumeDir : defaultOutDir(opt.scene));
     fs::create_directories(dir);
     return runSimulation(*sim, scene, {opt.scene, dir, opt.resumeDir, opt.quiet, startWall});
 }

@@ -13,9 +13,9 @@ namespace granulab::app {
 
 struct RunOptions {
     std::string scene;
-    std::string outDir;      ///< default: out/<scene file stem>
+    std::string outDir;  ///< default: out/<scene file stem>
     std::vector<io::Override> overrides;
-    std::string resumeDir;   ///< continue from resumeDir/checkpoint.bin
+    std::string resumeDir;  ///< continue from resumeDir/checkpoint.bin
     bool quiet = false;
 };
 

@@ -5,8 +5,9 @@
 // fires all three. Polled schedules fire at the first stop at or after their point.
 #include "app/run_loop.hpp"
 
-#include <filesystem>
 #include <fmt/format.h>
+
+#include <filesystem>
 
 #include "app/exit_codes.hpp"
 #include "app/progress.hpp"
@@ -38,10 +39,12 @@ int runSimulation(Simulation& sim, const model::SceneDef& scene, const RunContex
         progressTick(plan.progress), benchmark(plan.benchmark);
     const bool resumed = !ctx.resumeDir.empty();
     io::RunBookkeeping book;
-    std::string lastCheckpoint = "No checkpoint was written before the failure (see output.checkpoint_interval).";
+    std::string lastCheckpoint =
+        "No checkpoint was written before the failure (see output.checkpoint_interval).";
     if (resumed) {
         try {
-            book = io::readCheckpoint(ctx.resumeDir, headerOf(sim, 0), [&](std::istream& in) { sim.loadState(in); });
+            book = io::readCheckpoint(ctx.resumeDir, headerOf(sim, 0),
+                                      [&](std::istream& in) { sim.loadState(in); });
         } catch (const std::runtime_error& e) {  // a missing or foreign checkpoint is bad input
             throw SceneError(makeDiagnostic(ctx.resumeDir, 0, "--resume", e.what()));
         }
@@ -49,12 +52,14 @@ int runSimulation(Simulation& sim, const model::SceneDef& scene, const RunContex
     } else {
         sim.start();
     }
-    for (Trigger* t : {&end, &series, &snapshots, &checkpoints, &progressTick, &benchmark}) t->seek(sim.time(), sim.count());
+    for (Trigger* t : {&end, &series, &snapshots, &checkpoints, &progressTick, &benchmark})
+        t->seek(sim.time(), sim.count());
     if (resumed && !(end.next() < std::numeric_limits<double>::infinity()))
-        throw SceneError(makeDiagnostic(scene.run.loc.file, scene.run.loc.line, "run.end_time",
-                                        fmt::format("the checkpoint in {} is at t = {:.6g} s, where this scene's run ends already; "
-                                                    "to continue, set a later end (run.end_time, got {:.6g} s)",
-                                                    ctx.resumeDir, sim.time(), scene.run.endTime)));
+        throw SceneError(makeDiagnostic(
+            scene.run.loc.file, scene.run.loc.line, "run.end_time",
+            fmt::format("the checkpoint in {} is at t = {:.6g} s, where this scene's run ends already; "
+                        "to continue, set a later end (run.end_time, got {:.6g} s)",
+                        ctx.resumeDir, sim.time(), scene.run.endTime)));
 
     io::SeriesWriter seriesFile(ctx.dir + "/series.csv", sim.seriesColumns(), resumed ? sim.time() : -1.0);
     io::PvdWriter pvd(ctx.dir + "/snapshots.pvd");
@@ -73,7 +78,9 @@ int runSimulation(Simulation& sim, const model::SceneDef& scene, const RunContex
     const std::size_t warningsBefore = sim.warnings().size();
     if (!ctx.quiet) fmt::print(stderr, "{}\n", sim.banner(ctx.dir));
 
-    const auto position = [&] { return plan.progressByCount ? static_cast<double>(sim.count()) : sim.time(); };
+    const auto position = [&] {
+        return plan.progressByCount ? static_cast<double>(sim.count()) : sim.time();
+    };
     Progress progress(plan.progressEnd, ctx.quiet, sim.progressUnit(), plan.progressByCount);
     RunReport report;
     report.resumed = resumed;
@@ -88,7 +95,8 @@ int runSimulation(Simulation& sim, const model::SceneDef& scene, const RunContex
     std::uint32_t status = kSimOk;
     for (;;) {
         Stop stop;
-        for (const Trigger* t : {&end, &series, &snapshots, &checkpoints, &progressTick, &benchmark}) t->limit(stop);
+        for (const Trigger* t : {&end, &series, &snapshots, &checkpoints, &progressTick, &benchmark})
+            t->limit(stop);
         status = sim.advance(stop);
         if (status != kSimOk) break;
         const double t = sim.time();
@@ -111,7 +119,8 @@ int runSimulation(Simulation& sim, const model::SceneDef& scene, const RunContex
             if (doSnapshot) writeSnapshot();
             if (doCheckpoint) {
                 seriesFile.flush();
-                io::writeCheckpoint(ctx.dir, headerOf(sim, book.nextSnapshot), [&](std::ostream& out) { sim.saveState(out); });
+                io::writeCheckpoint(ctx.dir, headerOf(sim, book.nextSnapshot),
+                                    [&](std::ostream& out) { sim.saveState(out); });
                 lastCheckpoint = checkpointLine(t, ctx.dir);
             }
             report.outputSeconds += wallSeconds() - t0;

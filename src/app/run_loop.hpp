@@ -16,7 +16,7 @@ struct RunContext {
     std::string dir;        ///< output folder (exists)
     std::string resumeDir;  ///< empty: a fresh run
     bool quiet = false;
-    double startWall = 0;   ///< [s] wallSeconds() when the command started
+    double startWall = 0;  ///< [s] wallSeconds() when the command started
 };
 
 /// Runs `sim` to the end of its plan; returns the exit status (0, or 3 when it became

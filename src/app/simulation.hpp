@@ -8,10 +8,9 @@
 #include <functional>
 #include <iosfwd>
 #include <limits>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "io/checkpoint.hpp"
 #include "io/vtk_writer.hpp"
@@ -44,18 +43,22 @@ struct Schedule {
     /// Periodic schedules: point k is `every` added k times (the sum, as a loop would add it).
     double every = 0;
 
-    static Schedule never() { return {Unit::Time, true, [](std::int64_t) { return std::numeric_limits<double>::infinity(); }, 0}; }
-    static Schedule periodic(Unit unit, double every, bool exact = true) { return {unit, exact, nullptr, every}; }
+    static Schedule never() {
+        return {Unit::Time, true, [](std::int64_t) { return std::numeric_limits<double>::infinity(); }, 0};
+    }
+    static Schedule periodic(Unit unit, double every, bool exact = true) {
+        return {unit, exact, nullptr, every};
+    }
 };
 
 /// When the run ends and when each output fires (scene settings in the engine's units).
 struct RunPlan {
-    Schedule end;          ///< one point: the end of the run
-    Schedule series;       ///< series.csv rows
-    Schedule snapshots;    ///< VTK snapshots and per-snapshot files
-    Schedule checkpoints;  ///< checkpoint.bin
-    Schedule progress;     ///< progress updates (besides every other stop)
-    Schedule benchmark;    ///< one point: start of the timed segment (run.benchmark_from)
+    Schedule end;                  ///< one point: the end of the run
+    Schedule series;               ///< series.csv rows
+    Schedule snapshots;            ///< VTK snapshots and per-snapshot files
+    Schedule checkpoints;          ///< checkpoint.bin
+    Schedule progress;             ///< progress updates (besides every other stop)
+    Schedule benchmark;            ///< one point: start of the timed segment (run.benchmark_from)
     double progressEnd = 0;        ///< progress bar: end position (time [s] or count)
     bool progressByCount = false;  ///< progress position is the count, not the time
 };
@@ -63,10 +66,10 @@ struct RunPlan {
 /// Timing of the run loop, handed to the engine's summary keys.
 struct RunReport {
     bool resumed = false;
-    double loopSeconds = 0;    ///< [s] wall time of the loop, outputs included
-    double outputSeconds = 0;  ///< [s] of it spent in outputs and measurements
-    double benchmarkSeconds = -1;        ///< [s] from the benchmark point to the end (<0: none)
-    std::uint64_t benchmarkCount = 0;    ///< counts (steps) in that segment
+    double loopSeconds = 0;            ///< [s] wall time of the loop, outputs included
+    double outputSeconds = 0;          ///< [s] of it spent in outputs and measurements
+    double benchmarkSeconds = -1;      ///< [s] from the benchmark point to the end (<0: none)
+    std::uint64_t benchmarkCount = 0;  ///< counts (steps) in that segment
 };
 
 class Simulation {
@@ -74,13 +77,13 @@ public:
     virtual ~Simulation() = default;
 
     // ---- identity and state --------------------------------------------------------------
-    virtual std::string engine() const = 0;            ///< run.engine of the table row
-    virtual double time() const = 0;                   ///< [s]
-    virtual std::uint64_t count() const = 0;           ///< steps (dem), collisions (edmd)
+    virtual std::string engine() const = 0;                            ///< run.engine of the table row
+    virtual double time() const = 0;                                   ///< [s]
+    virtual std::uint64_t count() const = 0;                           ///< steps (dem), collisions (edmd)
     virtual std::uint64_t progressCounter() const { return count(); }  ///< for the rate shown
-    virtual std::string progressUnit() const = 0;      ///< "steps", "events"
+    virtual std::string progressUnit() const = 0;                      ///< "steps", "events"
     virtual std::size_t particles() const = 0;
-    virtual std::size_t memoryBytes() const = 0;       ///< engine state [bytes]
+    virtual std::size_t memoryBytes() const = 0;  ///< engine state [bytes]
     virtual std::vector<std::string> warnings() const = 0;
 
     // ---- the run ---------------------------------------------------------------------------

@@ -46,8 +46,11 @@ private:
     void step() {
         ++m_k;
         const double previous = m_next;
-        if (m_schedule.point) m_next = m_schedule.point(m_k);
-        else m_next = m_schedule.every > 0 ? m_next + m_schedule.every : std::numeric_limits<double>::infinity();
+        if (m_schedule.point)
+            m_next = m_schedule.point(m_k);
+        else
+            m_next =
+                m_schedule.every > 0 ? m_next + m_schedule.every : std::numeric_limits<double>::infinity();
         if (m_k > 1 && !(m_next > previous)) m_next = std::numeric_limits<double>::infinity();
     }
 

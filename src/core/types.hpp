@@ -24,18 +24,38 @@ struct Vec2 {
     constexpr Vec2 operator-() const noexcept { return {-x, -y}; }
     constexpr Vec2 operator*(Real s) const noexcept { return {x * s, y * s}; }
     constexpr Vec2 operator/(Real s) const noexcept { return {x / s, y / s}; }
-    constexpr Vec2& operator+=(Vec2 o) noexcept { x += o.x; y += o.y; return *this; }
-    constexpr Vec2& operator-=(Vec2 o) noexcept { x -= o.x; y -= o.y; return *this; }
+    constexpr Vec2& operator+=(Vec2 o) noexcept {
+        x += o.x;
+        y += o.y;
+        return *this;
+    }
+    constexpr Vec2& operator-=(Vec2 o) noexcept {
+        x -= o.x;
+        y -= o.y;
+        return *this;
+    }
     constexpr bool operator==(const Vec2&) const = default;
 };
 
-constexpr Vec2 operator*(Real s, Vec2 v) noexcept { return v * s; }
-constexpr Real dot(Vec2 a, Vec2 b) noexcept { return a.x * b.x + a.y * b.y; }
+constexpr Vec2 operator*(Real s, Vec2 v) noexcept {
+    return v * s;
+}
+constexpr Real dot(Vec2 a, Vec2 b) noexcept {
+    return a.x * b.x + a.y * b.y;
+}
 /// z-component of the 3D cross product (a,0) x (b,0).
-constexpr Real cross(Vec2 a, Vec2 b) noexcept { return a.x * b.y - a.y * b.x; }
+constexpr Real cross(Vec2 a, Vec2 b) noexcept {
+    return a.x * b.y - a.y * b.x;
+}
 /// Perpendicular rotated +90 degrees: z x a.
-constexpr Vec2 perp(Vec2 a) noexcept { return {-a.y, a.x}; }
-inline Real norm(Vec2 a) noexcept { return std::sqrt(dot(a, a)); }
-constexpr Real norm2(Vec2 a) noexcept { return dot(a, a); }
+constexpr Vec2 perp(Vec2 a) noexcept {
+    return {-a.y, a.x};
+}
+inline Real norm(Vec2 a) noexcept {
+    return std::sqrt(dot(a, a));
+}
+constexpr Real norm2(Vec2 a) noexcept {
+    return dot(a, a);
+}
 
 }  // namespace granulab

@@ -19,8 +19,12 @@ namespace granulab::dem {
 inline std::uint64_t pairKey(std::uint32_t a, std::uint32_t b) noexcept {
     return (static_cast<std::uint64_t>(a) << 32) | b;
 }
-inline std::uint32_t keyFirst(std::uint64_t k) noexcept { return static_cast<std::uint32_t>(k >> 32); }
-inline std::uint32_t keySecond(std::uint64_t k) noexcept { return static_cast<std::uint32_t>(k); }
+inline std::uint32_t keyFirst(std::uint64_t k) noexcept {
+    return static_cast<std::uint32_t>(k >> 32);
+}
+inline std::uint32_t keySecond(std::uint64_t k) noexcept {
+    return static_cast<std::uint32_t>(k);
+}
 
 class BroadPhase {
 public:
@@ -88,10 +92,10 @@ private:
     void sortAxis(int axis);
     bool overlapOn(int axis, std::uint32_t a, std::uint32_t b) const noexcept;
 
-    std::vector<Endpoint> m_xs, m_ys;                ///< sorted endpoint lists
-    std::vector<std::array<Real, 4>> m_box;          ///< [bx, ex, by, ey] per slot [m]
-    std::unordered_set<std::uint64_t> m_overlaps;    ///< overlapping box pairs (slot keys)
-    std::size_t m_tracked = 0;                       ///< slots in the lists
+    std::vector<Endpoint> m_xs, m_ys;              ///< sorted endpoint lists
+    std::vector<std::array<Real, 4>> m_box;        ///< [bx, ex, by, ey] per slot [m]
+    std::unordered_set<std::uint64_t> m_overlaps;  ///< overlapping box pairs (slot keys)
+    std::size_t m_tracked = 0;                     ///< slots in the lists
     Real m_margin = -1;
     CellGrid m_wallGrid;
 };

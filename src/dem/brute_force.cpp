@@ -40,6 +40,8 @@ std::unique_ptr<BroadPhase> makeBroadPhase(const std::string& name) {
     return nullptr;
 }
 
-std::vector<std::string> broadPhaseNames() { return {"auto", "cell_grid", "sort_and_sweep", "brute_force"}; }
+std::vector<std::string> broadPhaseNames() {
+    return {"auto", "cell_grid", "sort_and_sweep", "brute_force"};
+}
 
 }  // namespace granulab::dem

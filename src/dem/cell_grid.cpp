@@ -91,8 +91,10 @@ void CellGrid::findWallPairs(const model::ParticleStore& s, const model::WallSet
             const auto b = static_cast<std::int64_t>(std::floor((hi - origin) / m_cell));
             return std::pair{std::max<std::int64_t>(a, 0), std::min(b, count - 1)};
         };
-        const auto [x0, x1] = cellRange(std::min(w.a.x, w.b.x) - pad, std::max(w.a.x, w.b.x) + pad, m_x0, m_nx);
-        const auto [y0, y1] = cellRange(std::min(w.a.y, w.b.y) - pad, std::max(w.a.y, w.b.y) + pad, m_y0, m_ny);
+        const auto [x0, x1] =
+            cellRange(std::min(w.a.x, w.b.x) - pad, std::max(w.a.x, w.b.x) + pad, m_x0, m_nx);
+        const auto [y0, y1] =
+            cellRange(std::min(w.a.y, w.b.y) - pad, std::max(w.a.y, w.b.y) + pad, m_y0, m_ny);
         for (std::int64_t y = y0; y <= y1; ++y)
             for (std::int64_t x = x0; x <= x1; ++x) {
                 const std::size_t cell = static_cast<std::size_t>(y * m_nx + x);

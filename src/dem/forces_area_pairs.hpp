@@ -19,7 +19,8 @@ namespace {
 
 /// Debug checks of an area-law bucket [begin, end) of `list` (compiled out in Release).
 inline void assertAreaBucket([[maybe_unused]] const ContactList& list, [[maybe_unused]] std::uint32_t begin,
-                             [[maybe_unused]] std::uint32_t end, [[maybe_unused]] bool trialHistory) noexcept {
+                             [[maybe_unused]] std::uint32_t end,
+                             [[maybe_unused]] bool trialHistory) noexcept {
     GL_ASSERT(begin <= end && end <= list.size() && list.features.size() == list.size(),
               "bucket inside the list, one feature cache per pair");
     GL_ASSERT((trialHistory ? list.areaOldTrial : list.areaOld).size() == list.size(),

@@ -6,9 +6,10 @@
 // grains never changes the draws of disk scenes.
 #include "dem/generate.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 #include <map>
 #include <numeric>
 #include <unordered_map>
@@ -21,12 +22,12 @@
 namespace granulab::dem {
 
 using model::BlockDef;
+using model::Grain;
 using model::kDiskShape;
 using model::maxRadius;
 using model::minRadius;
-using model::SceneDef;
-using model::Grain;
 using model::ParticleDef;
+using model::SceneDef;
 using model::ShapeDef;
 using model::ShapePool;
 using model::SizeDistDef;
@@ -35,8 +36,10 @@ namespace {
 
 Real drawRadius(const SizeDistDef& d, CounterRng& rng) {
     switch (d.kind) {
-        case SizeDistDef::Kind::Constant: return d.value;
-        case SizeDistDef::Kind::Uniform: return rng.uniform(d.min, d.max);
+        case SizeDistDef::Kind::Constant:
+            return d.value;
+        case SizeDistDef::Kind::Uniform:
+            return rng.uniform(d.min, d.max);
         case SizeDistDef::Kind::Gaussian:
             for (int attempt = 0; attempt < 1000000; ++attempt) {  // truncation by rejection
                 const Real r = d.mean + d.sigma * rng.normal();
@@ -75,8 +78,7 @@ std::vector<Vec2> latticeSites(const BlockDef& b) {
 /// Random sequential addition of disks with radii `radii` (largest first) into the region,
 /// avoiding `existing` disks; returns false if a disk could not be placed.
 bool placeRandom(const BlockDef& b, std::vector<Real>& radii, CounterRng& rng,
-                 const std::vector<InitialParticle>& existing, std::vector<Vec2>& out,
-                 std::size_t& placed) {
+                 const std::vector<InitialParticle>& existing, std::vector<Vec2>& out, std::size_t& placed) {
     std::sort(radii.begin(), radii.end(), std::greater<>());
     const Real rmax = radii.empty() ? 0 : radii.front();
     Real existingMax = 0;
@@ -89,14 +91,15 @@ bool placeRandom(const BlockDef& b, std::vector<Real>& radii, CounterRng& rng,
         return (static_cast<std::uint64_t>(cx) << 32) ^ static_cast<std::uint64_t>(cy & 0xffffffff);
     };
     std::unordered_map<std::uint64_t, std::vector<std::pair<Vec2, Real>>> grid;
-    for (const auto& p : existing) grid[cellKey(p.position.x, p.position.y)].push_back({p.position, p.radius});
+    for (const auto& p : existing)
+        grid[cellKey(p.position.x, p.position.y)].push_back({p.position, p.radius});
     const auto fits = [&](Vec2 c, Real r) {
         const auto cx = static_cast<std::int64_t>(std::floor(c.x / cell));
         const auto cy = static_cast<std::int64_t>(std::floor(c.y / cell));
         for (std::int64_t ix = cx - 1; ix <= cx + 1; ++ix)
             for (std::int64_t iy = cy - 1; iy <= cy + 1; ++iy) {
-                const std::uint64_t key = (static_cast<std::uint64_t>(ix) << 32) ^
-                                          static_cast<std::uint64_t>(iy & 0xffffffff);
+                const std::uint64_t key =
+                    (static_cast<std::uint64_t>(ix) << 32) ^ static_cast<std::uint64_t>(iy & 0xffffffff);
                 auto it = grid.find(key);
                 if (it == grid.end()) continue;
                 for (const auto& [q, rq] : it->second)
@@ -159,10 +162,12 @@ public:
             const Grain g = randomGrain(def, rng);
             if (!geom::checkConvexPolygon(g.corners).ok()) {
                 if (!m_grainReported) {  // practically impossible; report once per shape set
-                    m_diags.error(def.loc, "shape",
-                                  fmt::format("shape '{}': could not draw a convex grain from semi-axes ({:.4g}, {:.4g}) m; "
-                                              "make the grain less elongated or use fewer corners",
-                                              def.name, g.semiAxes.x, g.semiAxes.y));
+                    m_diags.error(
+                        def.loc, "shape",
+                        fmt::format(
+                            "shape '{}': could not draw a convex grain from semi-axes ({:.4g}, {:.4g}) m; "
+                            "make the grain less elongated or use fewer corners",
+                            def.name, g.semiAxes.x, g.semiAxes.y));
                     m_grainReported = true;
                 }
                 return m;
@@ -280,7 +285,8 @@ InitialParticles generateParticles(const SceneDef& scene, const std::vector<std:
                 if (n > 0 && made.back().shape == kDiskShape) continue;  // invalid shape
                 std::vector<std::size_t> order(n);
                 std::iota(order.begin(), order.end(), std::size_t{0});
-                std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return radii[x] > radii[y]; });
+                std::stable_sort(order.begin(), order.end(),
+                                 [&](std::size_t x, std::size_t y) { return radii[x] > radii[y]; });
                 std::vector<ShapeMaker::Made> sorted(n);
                 for (std::size_t k = 0; k < n; ++k) sorted[k] = made[order[k]];
                 made.swap(sorted);
@@ -305,8 +311,10 @@ InitialParticles generateParticles(const SceneDef& scene, const std::vector<std:
                                           : 0.0;
             if (!valid) continue;
             if (estimate > 2e9) {
-                diags.error(b.loc, "block", fmt::format("lattice would create about {:.3g} particles (limit 2e9); "
-                                                        "check spacing and region", estimate));
+                diags.error(b.loc, "block",
+                            fmt::format("lattice would create about {:.3g} particles (limit 2e9); "
+                                        "check spacing and region",
+                                        estimate));
                 continue;
             }
             sites = latticeSites(b);

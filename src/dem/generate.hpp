@@ -16,8 +16,8 @@ namespace granulab::dem {
 struct InitialParticle {
     Vec2 position, velocity;
     Real angle = 0, omega = 0;
-    Real radius = 0;                      ///< [m] disk radius, or the polygon's circumradius
-    std::uint32_t shape = model::kDiskShape;    ///< index into InitialParticles::shapes
+    Real radius = 0;                          ///< [m] disk radius, or the polygon's circumradius
+    std::uint32_t shape = model::kDiskShape;  ///< index into InitialParticles::shapes
     std::uint32_t material = 0;
     std::uint32_t origin = 0;  ///< index into InitialParticles::origins (where it was defined)
 };
@@ -25,19 +25,20 @@ struct InitialParticle {
 struct InitialParticles {
     std::vector<InitialParticle> particles;  ///< id = index
     std::vector<SourceLoc> origins;          ///< explicit particles and blocks, by origin index
-    model::ShapePool shapes;                    ///< polygon shapes of the particles
+    model::ShapePool shapes;                 ///< polygon shapes of the particles
 };
 
 /// Mass [kg] of initial particle p with the density rho of its material (model::grainMass).
-inline Real initialMass(const InitialParticles& init, const InitialParticle& p, model::MassModel massModel, Real rho) noexcept {
-    return model::grainMass(massModel, rho, p.radius, p.shape == model::kDiskShape ? Real(-1) : init.shapes.area[p.shape]);
+inline Real initialMass(const InitialParticles& init, const InitialParticle& p, model::MassModel massModel,
+                        Real rho) noexcept {
+    return model::grainMass(massModel, rho, p.radius,
+                            p.shape == model::kDiskShape ? Real(-1) : init.shapes.area[p.shape]);
 }
 
 /// Generates all particles; a particle's material id is the index of its material in
 /// `materialNames` (model::materialNames).
 /// Problems (a block that cannot place its particles) go to `diags`.
 InitialParticles generateParticles(const model::SceneDef& scene,
-                                   const std::vector<std::string>& materialNames,
-                                   Diagnostics& diags);
+                                   const std::vector<std::string>& materialNames, Diagnostics& diags);
 
 }  // namespace granulab::dem

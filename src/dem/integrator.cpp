@@ -121,11 +121,15 @@ Real ExplicitEuler::predict(model::ParticleStore& s, Real dt) noexcept {
     return maxSpeed(s);
 }
 
-bool ExplicitEuler::correct(model::ParticleStore&, Real, int) noexcept { return true; }
+bool ExplicitEuler::correct(model::ParticleStore&, Real, int) noexcept {
+    return true;
+}
 
 // ------------------------------------------------------------------ cfddem predictor-corrector
 
-DriftVelocities PredictorCorrector::driftVelocities() const noexcept { return {m_state[6], m_state[7], m_state[8]}; }
+DriftVelocities PredictorCorrector::driftVelocities() const noexcept {
+    return {m_state[6], m_state[7], m_state[8]};
+}
 
 Real PredictorCorrector::predict(model::ParticleStore& s, Real dt) noexcept {
     const std::size_t n = s.size();
@@ -165,8 +169,8 @@ bool PredictorCorrector::correct(model::ParticleStore& s, Real dt, int iteration
         for (std::size_t i = 0; i < n; ++i) {
             const Real da = dof.force[d][i] * dof.inv[d][i] - ap[d][i];
             dof.pos[d][i] += 0.25 * c * da * dt * dt;  // Eq. 3.25
-            dof.vel[d][i] += 0.5 * c * da * dt;         // Eq. 3.26
-            ap[d][i] += c * da;                     // Eq. 3.27
+            dof.vel[d][i] += 0.5 * c * da * dt;        // Eq. 3.26
+            ap[d][i] += c * da;                        // Eq. 3.27
             drift[d][i] = 0.5 * (vn[d][i] + dof.vel[d][i]);
         }
     return false;
@@ -238,11 +242,14 @@ void GearPredictorCorrector::load(std::istream& is, std::size_t particles) {
 std::unique_ptr<Integrator> makeIntegrator(const IntegratorParams& p) {
     if (p.name == "verlet") return std::make_unique<VelocityVerlet>();
     if (p.name == "euler") return std::make_unique<ExplicitEuler>();
-    if (p.name == "pc") return std::make_unique<PredictorCorrector>(p.tolerance, p.maxIterations, p.corrector);
+    if (p.name == "pc")
+        return std::make_unique<PredictorCorrector>(p.tolerance, p.maxIterations, p.corrector);
     if (p.name == "gear") return std::make_unique<GearPredictorCorrector>(p.gearC0);
     return nullptr;
 }
 
-std::vector<std::string> integratorNames() { return {"auto", "verlet", "euler", "pc", "gear"}; }
+std::vector<std::string> integratorNames() {
+    return {"auto", "verlet", "euler", "pc", "gear"};
+}
 
 }  // namespace granulab::dem

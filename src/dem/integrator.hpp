@@ -27,10 +27,10 @@ struct DriftVelocities {
 /// Parameters of all integrators (each uses its own).
 struct IntegratorParams {
     std::string name = "verlet";
-    Real tolerance = 1e-5;    ///< pc: |a^c - a^p| threshold [m/s^2, rad/s^2]
-    int maxIterations = 10;   ///< pc: corrector iterations (0: modified explicit Euler)
-    Real corrector = 0.5;     ///< pc: relaxation factor c in (0, 1]
-    Real gearC0 = 3.0 / 16.0; ///< gear: first corrector coefficient (3/16 for velocity-dependent forces)
+    Real tolerance = 1e-5;     ///< pc: |a^c - a^p| threshold [m/s^2, rad/s^2]
+    int maxIterations = 10;    ///< pc: corrector iterations (0: modified explicit Euler)
+    Real corrector = 0.5;      ///< pc: relaxation factor c in (0, 1]
+    Real gearC0 = 3.0 / 16.0;  ///< gear: first corrector coefficient (3/16 for velocity-dependent forces)
 };
 
 class Integrator {
@@ -140,7 +140,9 @@ public:
     const char* name() const noexcept override { return "gear"; }
     Real predict(model::ParticleStore& s, Real dt) noexcept override;
     bool correct(model::ParticleStore& s, Real dt, int iteration) noexcept override;
-    DriftVelocities driftVelocities() const noexcept override { return {m_state[12], m_state[13], m_state[14]}; }
+    DriftVelocities driftVelocities() const noexcept override {
+        return {m_state[12], m_state[13], m_state[14]};
+    }
     void permute(const std::vector<std::uint32_t>& order) override { m_state.permute(order); }
     std::size_t memoryBytes() const noexcept override { return m_state.bytes(); }
     void save(std::ostream& os) const override;

@@ -66,13 +66,15 @@ std::vector<OldHistory> collectHistory(const ContactList& list, const std::vecto
 /// Buckets sorted keys by law form and restores history.
 template <class MaterialOfSecond>
 void fillList(ContactList& list, const std::vector<std::uint64_t>& keys, const std::vector<OldHistory>& old,
-              const model::ParticleStore& s, const LawTable& laws, bool trialHistory, MaterialOfSecond materialOfSecond) {
+              const model::ParticleStore& s, const LawTable& laws, bool trialHistory,
+              MaterialOfSecond materialOfSecond) {
     const std::uint32_t forms = std::max<std::uint32_t>(laws.formCount(), 1);
     list.bucketStart.assign(forms + 1, 0);
     std::vector<std::uint32_t> formOfKey(keys.size());
     for (std::size_t k = 0; k < keys.size(); ++k) {
         const std::uint32_t a = keyFirst(keys[k]);
-        const std::uint32_t f = laws.formCount() ? laws.formOf(s.material[a], materialOfSecond(keySecond(keys[k]))) : 0;
+        const std::uint32_t f =
+            laws.formCount() ? laws.formOf(s.material[a], materialOfSecond(keySecond(keys[k]))) : 0;
         formOfKey[k] = f;
         ++list.bucketStart[f + 1];
     }
@@ -108,15 +110,16 @@ void fillList(ContactList& list, const std::vector<std::uint64_t>& keys, const s
 }  // namespace
 
 void NeighborList::rebuild(const model::ParticleStore& s, const model::WallSet& walls, Real skin, Real time,
-                           BroadPhase& broad, const LawTable& laws, const std::vector<std::uint32_t>& oldToNew,
-                           bool trialHistory) {
+                           BroadPhase& broad, const LawTable& laws,
+                           const std::vector<std::uint32_t>& oldToNew, bool trialHistory) {
     const auto oldPairs = collectHistory(pairs, oldToNew, true);
     const auto oldWall = collectHistory(wallPairs, oldToNew, false);
     std::vector<std::uint64_t> keys;
     broad.findPairs(s, skin, keys);
     fillList(pairs, keys, oldPairs, s, laws, trialHistory, [&](std::uint32_t j) { return s.material[j]; });
     broad.findWallPairs(s, walls, skin, keys);
-    fillList(wallPairs, keys, oldWall, s, laws, trialHistory, [&](std::uint32_t seg) { return walls.segments[seg].material; });
+    fillList(wallPairs, keys, oldWall, s, laws, trialHistory,
+             [&](std::uint32_t seg) { return walls.segments[seg].material; });
     x0 = s.x;
     y0 = s.y;
     wallTime0 = time;

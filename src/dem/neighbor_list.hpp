@@ -36,16 +36,17 @@ struct ContactList {
     std::size_t size() const noexcept { return first.size(); }
     std::size_t memoryBytes() const noexcept {
         return first.capacity() * 4 + second.capacity() * 4 +
-               (xi.capacity() + xiTrial.capacity() + zeta.capacity() + zetaTrial.capacity() + areaOld.capacity() +
-                areaOldTrial.capacity()) * sizeof(Real) +
+               (xi.capacity() + xiTrial.capacity() + zeta.capacity() + zetaTrial.capacity() +
+                areaOld.capacity() + areaOldTrial.capacity()) *
+                   sizeof(Real) +
                features.capacity() * sizeof(geom::FeatureCache) + bucketStart.capacity() * 4;
     }
 };
 
 class NeighborList {
 public:
-    ContactList pairs;      ///< particle-particle candidates
-    ContactList wallPairs;  ///< particle-segment candidates
+    ContactList pairs;         ///< particle-particle candidates
+    ContactList wallPairs;     ///< particle-segment candidates
     std::vector<Real> x0, y0;  ///< [m] positions at the last rebuild
     Real wallTime0 = 0;        ///< [s] time of the last rebuild (for wall motion)
     std::uint64_t builds = 0;

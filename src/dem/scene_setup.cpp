@@ -4,15 +4,16 @@
 // (gc2d spec section 2.3) and the time-step limits (cfddem spec section 3.5, gc2d Eq. 2.9).
 #include "dem/scene_setup.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "core/suggest.hpp"
 #include "dem/broad_phase.hpp"
 #include "dem/integrator.hpp"
-#include "geom/polygon.hpp"
 #include "geom/overlap_tests.hpp"
+#include "geom/polygon.hpp"
 #include "geom/segment.hpp"
 #include "model/material_names.hpp"
 #include "model/particle_store.hpp"
@@ -59,10 +60,12 @@ void checkStartOverlaps(const model::SceneDef& scene, const InitialParticles& in
             const Real area = geom::convexOverlap(corners[i], corners[j]).area;
             const Real smaller = std::min(init.shapes.area[pi.shape], init.shapes.area[pj.shape]);
             if (area <= 1e-9 * smaller) continue;  // touching (rounding slivers) is allowed
-            report(init.origins[pi.origin],
-                   fmt::format("polygon particles {} and {} overlap at start (overlap area {:.4g} m^2, {:.3g} % of the "
-                               "smaller; the other is defined at {})",
-                               i, j, area, 100 * area / smaller, where));
+            report(
+                init.origins[pi.origin],
+                fmt::format(
+                    "polygon particles {} and {} overlap at start (overlap area {:.4g} m^2, {:.3g} % of the "
+                    "smaller; the other is defined at {})",
+                    i, j, area, 100 * area / smaller, where));
             continue;
         }
         Real overlap = 0, scale = pi.radius + pj.radius;
@@ -76,7 +79,8 @@ void checkStartOverlaps(const model::SceneDef& scene, const InitialParticles& in
         }
         if (overlap <= 1e-12 * scale) continue;
         report(init.origins[pi.origin],
-               fmt::format("particles {} and {} overlap by {:.4g} m at start (the other is defined at {})", i, j, overlap, where));
+               fmt::format("particles {} and {} overlap by {:.4g} m at start (the other is defined at {})", i,
+                           j, overlap, where));
     }
     model::WallSet walls;
     for (const auto& w : scene.walls) walls.addPolyline(w.name, w.points, w.closed, 0, {});
@@ -94,10 +98,12 @@ void checkStartOverlaps(const model::SceneDef& scene, const InitialParticles& in
         } else if (!geom::segmentEntersPolygon(seg.a, seg.b, corners[i])) {
             continue;
         }
-        report(init.origins[p.origin],
-               fmt::format("particle {} at ({:.6g}, {:.6g}) overlaps wall[{}]{} at start (the wall is defined at {}); "
-                           "block regions bound the particle centres, so keep them a radius away from walls",
-                           i, p.position.x, p.position.y, seg.wall, depth, scene.walls[seg.wall].loc.str()));
+        report(
+            init.origins[p.origin],
+            fmt::format(
+                "particle {} at ({:.6g}, {:.6g}) overlaps wall[{}]{} at start (the wall is defined at {}); "
+                "block regions bound the particle centres, so keep them a radius away from walls",
+                i, p.position.x, p.position.y, seg.wall, depth, scene.walls[seg.wall].loc.str()));
     }
 }
 
@@ -105,10 +111,12 @@ void checkStartOverlaps(const model::SceneDef& scene, const InitialParticles& in
 
 PreparedScene prepareScene(const model::SceneDef& scene, Diagnostics& diags) {
     const auto names = model::materialNames(scene);
-    const auto oneOf = [&](const std::string& key, const std::string& v, const std::vector<std::string>& allowed) {
+    const auto oneOf = [&](const std::string& key, const std::string& v,
+                           const std::vector<std::string>& allowed) {
         if (std::find(allowed.begin(), allowed.end(), v) == allowed.end())
             diags.error(scene.dem.loc, key,
-                        fmt::format("'{}' is not allowed{}; allowed: {}", v, didYouMean(v, allowed), joinList(allowed)));
+                        fmt::format("'{}' is not allowed{}; allowed: {}", v, didYouMean(v, allowed),
+                                    joinList(allowed)));
     };
     oneOf("dem.integrator", scene.dem.integrator, integratorNames());
     oneOf("dem.broad_phase", scene.dem.broadPhase, broadPhaseNames());
@@ -127,35 +135,42 @@ PreparedScene prepareScene(const model::SceneDef& scene, Diagnostics& diags) {
         const Real rho = scene.materials[p.material].density;
         const Real m = initialMass(out.initial, p, massModel, rho);
         minMass[p.material] = minMass[p.material] > 0 ? std::min(minMass[p.material], m) : m;
-        minRadius[p.material] = minRadius[p.material] > 0 ? std::min(minRadius[p.material], p.radius) : p.radius;
+        minRadius[p.material] =
+            minRadius[p.material] > 0 ? std::min(minRadius[p.material], p.radius) : p.radius;
         speed = std::max(speed, norm(p.velocity));
         ylo = std::min(ylo, p.position.y);
         yhi = std::max(yhi, p.position.y);
         usedByParticles[p.material] = true;
     }
     for (const auto& w : scene.walls)
-        usedByWalls[static_cast<std::size_t>(std::find(names.begin(), names.end(), w.material) - names.begin())] = true;
-    if (out.initial.particles.empty()) diags.error({scene.path, 0, 0}, "", "the scene has no particles ([[particle]] or [[block]])");
+        usedByWalls[static_cast<std::size_t>(std::find(names.begin(), names.end(), w.material) -
+                                             names.begin())] = true;
+    if (out.initial.particles.empty())
+        diags.error({scene.path, 0, 0}, "", "the scene has no particles ([[particle]] or [[block]])");
     for (std::size_t m = 0; m < nm; ++m) {
         if (usedByParticles[m] && !(scene.materials[m].density > 0))
             diags.error(scene.materials[m].loc, fmt::format("material[{}].density", m),
-                        fmt::format("material '{}' is used by particles and needs density > 0 [{}], got {}", names[m],
-                                    massModel == model::MassModel::Sphere ? "kg/m^3" : "kg/m^2", scene.materials[m].density));
+                        fmt::format("material '{}' is used by particles and needs density > 0 [{}], got {}",
+                                    names[m], massModel == model::MassModel::Sphere ? "kg/m^3" : "kg/m^2",
+                                    scene.materials[m].density));
         for (std::size_t o = 0; o < nm; ++o) {
             // Particle pairs are unordered (report m <= o once); particle-wall pairs are ordered.
             const bool occurs = usedByParticles[m] && ((usedByParticles[o] && o >= m) || usedByWalls[o]);
             if (occurs && !laws.has(static_cast<std::uint32_t>(m), static_cast<std::uint32_t>(o)))
                 diags.error({scene.path, 0, 0}, "contact",
-                            fmt::format("no [[contact]] law for materials {}/{} (add one, or use \"*\")", names[m], names[o]));
+                            fmt::format("no [[contact]] law for materials {}/{} (add one, or use \"*\")",
+                                        names[m], names[o]));
         }
     }
     for (std::size_t k = 0; k < scene.springs.size(); ++k) {
         const auto& sp = scene.springs[k];
         if (sp.particle < 0 || sp.particle >= static_cast<std::int64_t>(out.initial.particles.size()))
-            diags.error(sp.loc, fmt::format("spring[{}].particle", k),
-                        fmt::format("particle id {} does not exist; allowed [0, {}] (generation order: [[particle]]s, "
-                                    "then [[block]]s)",
-                                    sp.particle, static_cast<std::int64_t>(out.initial.particles.size()) - 1));
+            diags.error(
+                sp.loc, fmt::format("spring[{}].particle", k),
+                fmt::format(
+                    "particle id {} does not exist; allowed [0, {}] (generation order: [[particle]]s, "
+                    "then [[block]]s)",
+                    sp.particle, static_cast<std::int64_t>(out.initial.particles.size()) - 1));
     }
     checkStartOverlaps(scene, out.initial, diags);
     diags.throwIfAny();
@@ -166,34 +181,39 @@ PreparedScene prepareScene(const model::SceneDef& scene, Diagnostics& diags) {
         speed = std::max(speed, norm(w.velocity));
         for (const auto& q : w.points) ylo = std::min(ylo, q.y);  // fall height down to the walls
     }
-    if (!out.initial.particles.empty()) speed = std::max(speed, std::sqrt(2 * norm(scene.dem.gravity) * (yhi - ylo)));
+    if (!out.initial.particles.empty())
+        speed = std::max(speed, std::sqrt(2 * norm(scene.dem.gravity) * (yhi - ylo)));
     speed = std::max(speed, 0.01);
     out.advice = adviseTimeStep(laws, names, minMass, minRadius, usedByWalls, speed);
     out.impactSpeed = speed;
     const Real dt = scene.dem.dt;
     if (out.advice.stabilityLimit > 0 && dt > out.advice.stabilityLimit)
         diags.error(scene.dem.loc, "dem.dt",
-                    fmt::format("dt = {:.4g} s is above the stability limit {:.4g} s of the {} contact (contact time {:.4g} s); "
+                    fmt::format("dt = {:.4g} s is above the stability limit {:.4g} s of the {} contact "
+                                "(contact time {:.4g} s); "
                                 "allowed (0, {:.4g}], advised {:.4g} s",
                                 dt, out.advice.stabilityLimit, out.advice.pair, out.advice.contactTime,
                                 out.advice.stabilityLimit, out.advice.advisedDt));
     else if (out.advice.contactTime > 0 && dt > out.advice.contactTime / 20)
-        out.warnings.push_back(fmt::format("dt = {:.4g} s resolves the {} contact time {:.4g} s with only {:.1f} steps; "
-                                           "advised dt = {:.4g} s (50 steps)",
-                                           dt, out.advice.pair, out.advice.contactTime, out.advice.contactTime / dt,
-                                           out.advice.advisedDt));
+        out.warnings.push_back(fmt::format(
+            "dt = {:.4g} s resolves the {} contact time {:.4g} s with only {:.1f} steps; "
+            "advised dt = {:.4g} s (50 steps)",
+            dt, out.advice.pair, out.advice.contactTime, out.advice.contactTime / dt, out.advice.advisedDt));
     std::vector<Real> density(nm, 0);
     for (std::size_t m = 0; m < scene.materials.size(); ++m) density[m] = scene.materials[m].density;
     adviseFaceTimeStep(laws, out.initial, density, out.advice);
     if (out.advice.areaAdvisedDt > 0 && dt > out.advice.areaAdvisedDt)  // gc2d Eq. 2.9
-        out.warnings.push_back(fmt::format("dt = {:.4g} s exceeds the gc2d rule (pi/10) sqrt(m/E) = {:.4g} s of the {} "
-                                           "contact (lightest particle); advised dt <= {:.4g} s",
-                                           dt, out.advice.areaAdvisedDt, out.advice.areaPair, out.advice.faceAdvisedDt));
+        out.warnings.push_back(
+            fmt::format("dt = {:.4g} s exceeds the gc2d rule (pi/10) sqrt(m/E) = {:.4g} s of the {} "
+                        "contact (lightest particle); advised dt <= {:.4g} s",
+                        dt, out.advice.areaAdvisedDt, out.advice.areaPair, out.advice.faceAdvisedDt));
     else if (out.advice.faceAdvisedDt > 0 && dt > out.advice.faceAdvisedDt)
-        out.warnings.push_back(fmt::format(
-            "dt = {:.4g} s is within the gc2d rule but above (pi/10) sqrt(m/k_face) = {:.4g} s for flat faces of {} "
-            "(face stiffness E L_max / (r_in / 2)); flat contacts may rattle or bounce: advised dt <= {:.4g} s",
-            dt, out.advice.faceAdvisedDt, out.advice.faceParticle, out.advice.faceAdvisedDt));
+        out.warnings.push_back(
+            fmt::format("dt = {:.4g} s is within the gc2d rule but above (pi/10) sqrt(m/k_face) = {:.4g} s "
+                        "for flat faces of {} "
+                        "(face stiffness E L_max / (r_in / 2)); flat contacts may rattle or bounce: advised "
+                        "dt <= {:.4g} s",
+                        dt, out.advice.faceAdvisedDt, out.advice.faceParticle, out.advice.faceAdvisedDt));
     diags.throwIfAny();
     return out;
 }

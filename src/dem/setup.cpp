@@ -2,14 +2,14 @@
 // World construction from Defs; contact-time analysis of the linear law (docs/physics).
 #include "dem/setup.hpp"
 
-#include "model/material_names.hpp"
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "core/suggest.hpp"
 #include "dem/contact/registry.hpp"
+#include "model/material_names.hpp"
 
 namespace granulab::dem {
 
@@ -51,7 +51,8 @@ LawTable buildLawTable(const model::SceneDef& scene, Diagnostics& diags) {
                 anyPair = true;
                 auto& p = priority[static_cast<std::size_t>(a) * n + b];
                 if (p == prio && prio == 2)
-                    diags.error(def.loc, ctx, fmt::format("second law for materials {}/{}", names[a], names[b]));
+                    diags.error(def.loc, ctx,
+                                fmt::format("second law for materials {}/{}", names[a], names[b]));
                 if (prio >= p) {
                     p = prio;
                     priority[static_cast<std::size_t>(b) * n + a] = prio;
@@ -74,7 +75,7 @@ namespace {
 /// Undamped angular frequency [1/s] and damping rate c/(2 meff) [1/s] of a contact, and its
 /// duration [s]. Nonlinear springs are linearised at the largest overlap of an impact at `speed`.
 struct Oscillator {
-    Real omega0 = 0;    ///< normal spring
+    Real omega0 = 0;  ///< normal spring
     Real rate = 0;
     Real omegaMax = 0;  ///< largest of normal and tangential (stability)
     Real contactTime = 0;
@@ -106,18 +107,21 @@ Oscillator oscillatorOf(const ContactLaw& law, Real meff, Real reff, Real speed)
     // plus rolling of both bodies; use the smaller.
     Real kt = 0;
     if (const auto* cs = std::get_if<CundallStrack>(&law.tangential)) kt = cs->kt;
-    if (const auto* mi = std::get_if<MindlinTangential>(&law.tangential)) kt = mi->stiffness(overlapMax, reff);
+    if (const auto* mi = std::get_if<MindlinTangential>(&law.tangential))
+        kt = mi->stiffness(overlapMax, reff);
     o.omegaMax = std::max(o.omegaMax, std::sqrt(3.5 * kt / meff));
     return o;
 }
 }  // namespace
 
-TimeStepAdvice adviseTimeStep(const LawTable& laws, const std::vector<std::string>& names, const std::vector<Real>& minMass,
-                              const std::vector<Real>& minRadius, const std::vector<bool>& usedByWalls, Real speed) {
+TimeStepAdvice adviseTimeStep(const LawTable& laws, const std::vector<std::string>& names,
+                              const std::vector<Real>& minMass, const std::vector<Real>& minRadius,
+                              const std::vector<bool>& usedByWalls, Real speed) {
     TimeStepAdvice advice;
     Real worst = 0;
     const auto n = laws.materialCount();
-    const auto consider = [&](std::uint32_t a, std::uint32_t b, Real meff, Real reff, const std::string& label) {
+    const auto consider = [&](std::uint32_t a, std::uint32_t b, Real meff, Real reff,
+                              const std::string& label) {
         if (!laws.has(a, b) || !(meff > 0)) return;
         if (const auto* area = std::get_if<AreaNormal>(&laws.law(a, b).normal)) {
             // gc2d Eq. 2.9: about ten steps per harmonic half period, m the lighter body. Called
@@ -144,16 +148,18 @@ TimeStepAdvice adviseTimeStep(const LawTable& laws, const std::vector<std::strin
         for (std::uint32_t b = a; b < n; ++b) {
             if (minMass[b] > 0)
                 consider(a, b, minMass[a] * minMass[b] / (minMass[a] + minMass[b]),
-                         minRadius[a] * minRadius[b] / (minRadius[a] + minRadius[b]), names[a] + "-" + names[b]);
+                         minRadius[a] * minRadius[b] / (minRadius[a] + minRadius[b]),
+                         names[a] + "-" + names[b]);
         }
         for (std::uint32_t b = 0; b < n; ++b)
-            if (usedByWalls[b]) consider(a, b, minMass[a], minRadius[a], names[a] + "-wall(" + names[b] + ")");
+            if (usedByWalls[b])
+                consider(a, b, minMass[a], minRadius[a], names[a] + "-wall(" + names[b] + ")");
     }
     return advice;
 }
 
-void adviseFaceTimeStep(const LawTable& laws, const InitialParticles& initial, const std::vector<Real>& density,
-                        TimeStepAdvice& advice) {
+void adviseFaceTimeStep(const LawTable& laws, const InitialParticles& initial,
+                        const std::vector<Real>& density, TimeStepAdvice& advice) {
     const auto n = laws.materialCount();
     std::vector<Real> stiffest(n, 0);  // largest area-law E [N/m] any contact of material m can have
     for (std::uint32_t a = 0; a < n; ++a)
@@ -168,11 +174,13 @@ void adviseFaceTimeStep(const LawTable& laws, const InitialParticles& initial, c
         const auto first = pool.start[k], count = pool.count[k];
         for (std::uint32_t c = 0; c < count; ++c)
             edge = std::max(edge, norm(pool.corners[first + (c + 1) % count] - pool.corners[first + c]));
-        if (pool.inradius[k] > 0) faceRatio[k] = std::max<Real>(1, 2 * edge / pool.inradius[k]);  // round: the gc2d rule
+        if (pool.inradius[k] > 0)
+            faceRatio[k] = std::max<Real>(1, 2 * edge / pool.inradius[k]);  // round: the gc2d rule
     }
     for (std::size_t k = 0; k < initial.particles.size(); ++k) {
         const auto& p = initial.particles[k];
-        if (p.shape == model::kDiskShape || !(stiffest[p.material] > 0) || !(pool.inradius[p.shape] > 0)) continue;
+        if (p.shape == model::kDiskShape || !(stiffest[p.material] > 0) || !(pool.inradius[p.shape] > 0))
+            continue;
         const Real m = density[p.material] * pool.area[p.shape];
         const Real ratio = faceRatio[p.shape];
         const Real dt = kPi / 10.0 * std::sqrt(m / (stiffest[p.material] * ratio));

@@ -6,10 +6,10 @@
 #include <vector>
 
 #include "core/error.hpp"
-#include "dem/law_table.hpp"
-#include "dem/world.hpp"
 #include "dem/generate.hpp"
+#include "dem/law_table.hpp"
 #include "dem/step_clock.hpp"
+#include "dem/world.hpp"
 #include "model/scene_def.hpp"
 
 namespace granulab::dem {
@@ -26,15 +26,17 @@ struct TimeStepAdvice {
     std::string pair;         ///< which contact sets the limit, e.g. "grain-grain"
     Real areaAdvisedDt = 0;   ///< [s] gc2d rule (pi/10) sqrt(m_min/E) of the area-law contacts (0: none)
     std::string areaPair;     ///< which area-law contact sets it
-    Real faceAdvisedDt = 0;   ///< [s] (pi/10) sqrt(m/k_face) with the flat-face stiffness of polygons (0: none)
-    std::string faceParticle; ///< which particle sets it
+    Real faceAdvisedDt =
+        0;  ///< [s] (pi/10) sqrt(m/k_face) with the flat-face stiffness of polygons (0: none)
+    std::string faceParticle;  ///< which particle sets it
 };
 
 /// `usedByWalls[m]` tells which materials walls use; `minMass[m]` [kg] and `minRadius[m]` [m] are
 /// the lightest and smallest particle of material m (0: no particle). Nonlinear (Hertz) contacts
 /// are analysed for an impact at `speed` [m/s].
-TimeStepAdvice adviseTimeStep(const LawTable& laws, const std::vector<std::string>& names, const std::vector<Real>& minMass,
-                              const std::vector<Real>& minRadius, const std::vector<bool>& usedByWalls, Real speed);
+TimeStepAdvice adviseTimeStep(const LawTable& laws, const std::vector<std::string>& names,
+                              const std::vector<Real>& minMass, const std::vector<Real>& minRadius,
+                              const std::vector<bool>& usedByWalls, Real speed);
 
 /// True if some particle or block of the scene uses a polygon [[shape]].
 bool hasPolygons(const model::SceneDef& scene) noexcept;
@@ -48,8 +50,8 @@ std::string broadPhaseOf(const model::SceneDef& scene);
 /// (L_max the longest edge, l >= r_in / 2 between two grains, r_in the inradius) for every
 /// polygon particle and fills advice.faceAdvisedDt with the smallest (pi/10) sqrt(m / k_face).
 /// `density` by material index.
-void adviseFaceTimeStep(const LawTable& laws, const InitialParticles& initial, const std::vector<Real>& density,
-                        TimeStepAdvice& advice);
+void adviseFaceTimeStep(const LawTable& laws, const InitialParticles& initial,
+                        const std::vector<Real>& density, TimeStepAdvice& advice);
 
 /// Translates the scene's damping windows etc. into the engine configuration.
 WorldConfig makeWorldConfig(const model::SceneDef& scene, Real maxRadius);

@@ -53,8 +53,9 @@ void SortAndSweep::sortAxis(int axis) {
             if (left.box != moving.box) {
                 if (!left.isEnd && moving.isEnd) {
                     m_overlaps.erase(orderedKey(left.box, moving.box));  // b_m e_n -> e_n b_m: separate
-                } else if (left.isEnd && !moving.isEnd) {               // e_m b_n -> b_n e_m: start
-                    if (overlapOn(1 - axis, left.box, moving.box)) m_overlaps.insert(orderedKey(left.box, moving.box));
+                } else if (left.isEnd && !moving.isEnd) {                // e_m b_n -> b_n e_m: start
+                    if (overlapOn(1 - axis, left.box, moving.box))
+                        m_overlaps.insert(orderedKey(left.box, moving.box));
                 }
             }
             list[j] = list[j - 1];

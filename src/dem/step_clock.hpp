@@ -13,10 +13,14 @@ namespace granulab::dem {
 
 /// Steps in a duration [s] at time step dt [s], rounded to the nearest step (an end time, an
 /// output period).
-inline std::int64_t stepsIn(Real duration, Real dt) noexcept { return std::llround(duration / dt); }
+inline std::int64_t stepsIn(Real duration, Real dt) noexcept {
+    return std::llround(duration / dt);
+}
 
 /// Steps of an output period [s]: rounded to the nearest step, at least one.
-inline std::int64_t periodSteps(Real period, Real dt) noexcept { return std::max<std::int64_t>(1, stepsIn(period, dt)); }
+inline std::int64_t periodSteps(Real period, Real dt) noexcept {
+    return std::max<std::int64_t>(1, stepsIn(period, dt));
+}
 
 /// First step k with k dt >= t [s] (a window opening at t); t/dt within 1e-9 of an integer counts
 /// as that integer, so a window written as a multiple of dt opens on that step.

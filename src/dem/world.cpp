@@ -14,12 +14,18 @@ namespace granulab::dem {
 
 const char* stageName(Stage s) noexcept {
     switch (s) {
-        case Stage::Predict: return "predict";
-        case Stage::Neighbors: return "neighbors";
-        case Stage::Forces: return "forces";
-        case Stage::Correct: return "correct";
-        case Stage::Updaters: return "updaters";
-        case Stage::Count: break;
+        case Stage::Predict:
+            return "predict";
+        case Stage::Neighbors:
+            return "neighbors";
+        case Stage::Forces:
+            return "forces";
+        case Stage::Correct:
+            return "correct";
+        case Stage::Updaters:
+            return "updaters";
+        case Stage::Count:
+            break;
     }
     return "?";
 }
@@ -42,7 +48,8 @@ World::World(WorldConfig config, model::ParticleStore store, model::WallSet wall
 
 void World::evaluateForces(const BodyForces& body, const DriftVelocities& drift, bool trial) {
     m_shapes.pool = &m_pool;
-    computeForces(m_store, m_walls, m_list, m_laws, body, drift, m_config.dt, trial, m_stats, m_wallForce, m_shapes);
+    computeForces(m_store, m_walls, m_list, m_laws, body, drift, m_config.dt, trial, m_stats, m_wallForce,
+                  m_shapes);
 }
 
 BodyForces World::bodyForcesAt(std::int64_t step) const noexcept {
@@ -141,13 +148,15 @@ Energies World::energies() const noexcept {
 
 Vec2 World::momentum() const noexcept {
     Vec2 p;
-    for (std::size_t i = 0; i < m_store.size(); ++i) p += Vec2{m_store.vx[i], m_store.vy[i]} * m_store.mass[i];
+    for (std::size_t i = 0; i < m_store.size(); ++i)
+        p += Vec2{m_store.vx[i], m_store.vy[i]} * m_store.mass[i];
     return p;
 }
 
 std::size_t World::memoryBytes() const noexcept {
-    return m_store.size() * model::ParticleStore::kBytesPerParticle + m_list.memoryBytes() + m_broad->memoryBytes() +
-           m_integrator->memoryBytes() + m_pool.memoryBytes() + m_shapes.world.capacity() * sizeof(Vec2) + m_shapes.first.capacity() * 4;
+    return m_store.size() * model::ParticleStore::kBytesPerParticle + m_list.memoryBytes() +
+           m_broad->memoryBytes() + m_integrator->memoryBytes() + m_pool.memoryBytes() +
+           m_shapes.world.capacity() * sizeof(Vec2) + m_shapes.first.capacity() * 4;
 }
 
 namespace {

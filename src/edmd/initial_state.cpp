@@ -23,7 +23,8 @@ void placeOnLattice(const InitialStateSpec& spec, GasState<D>& g) {
     std::array<std::uint64_t, 3> sites{1, 1, 1};
     std::uint64_t total = 1;
     for (int d = 0; d < D; ++d) {
-        sites[d] = std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::floor(spec.box[d] / spacingGuess)));
+        sites[d] =
+            std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::floor(spec.box[d] / spacingGuess)));
         total *= sites[d];
     }
     for (int d = 0; total < spec.count; d = (d + 1) % D) {  // round up axis by axis until N fit
@@ -34,10 +35,11 @@ void placeOnLattice(const InitialStateSpec& spec, GasState<D>& g) {
     for (int d = 0; d < D; ++d) {
         const Real spacing = spec.box[d] / static_cast<Real>(sites[d]);
         if (spacing < 2 * rmax)
-            throw std::invalid_argument("the lattice spacing " + std::to_string(spacing) + " m along axis " +
-                                        std::to_string(d) + " is below the largest diameter " + std::to_string(2 * rmax) +
-                                        " m: lower the volume fraction (a simple lattice holds at most " +
-                                        (D == 2 ? "0.785" : "0.524") + "), or start lower and grow (edmd.growth_rate)");
+            throw std::invalid_argument(
+                "the lattice spacing " + std::to_string(spacing) + " m along axis " + std::to_string(d) +
+                " is below the largest diameter " + std::to_string(2 * rmax) +
+                " m: lower the volume fraction (a simple lattice holds at most " +
+                (D == 2 ? "0.785" : "0.524") + "), or start lower and grow (edmd.growth_rate)");
     }
     for (std::uint64_t k = 0; k < spec.count; ++k) {
         std::uint64_t site = static_cast<std::uint64_t>((static_cast<long double>(k) * total) / spec.count);
@@ -70,9 +72,10 @@ void placeAtRandom(const InitialStateSpec& spec, GasState<D>& g) {
     };
     while (g.x.size() < spec.count) {
         if (++attempts > maxAttempts)
-            throw std::invalid_argument("random placement found room for only " + std::to_string(g.x.size()) + " of " +
-                                        std::to_string(spec.count) + " particles (random sequential addition jams near " +
-                                        (D == 2 ? "0.547" : "0.38") + "): use placement = \"lattice\", or grow");
+            throw std::invalid_argument(
+                "random placement found room for only " + std::to_string(g.x.size()) + " of " +
+                std::to_string(spec.count) + " particles (random sequential addition jams near " +
+                (D == 2 ? "0.547" : "0.38") + "): use placement = \"lattice\", or grow");
         const Real r = g.radius[g.x.size()];
         VecD<D> p;
         for (int d = 0; d < D; ++d) {
@@ -115,7 +118,8 @@ void placeAtRandom(const InitialStateSpec& spec, GasState<D>& g) {
         }
         if (!free) continue;
         std::size_t index = 0;
-        for (int d = D - 1; d >= 0; --d) index = index * static_cast<std::size_t>(cells[d]) + static_cast<std::size_t>(c[d]);
+        for (int d = D - 1; d >= 0; --d)
+            index = index * static_cast<std::size_t>(cells[d]) + static_cast<std::size_t>(c[d]);
         members[index].push_back(static_cast<std::uint32_t>(g.x.size()));
         g.x.push_back(p);
     }
@@ -131,13 +135,16 @@ GasState<D> makeInitialState(const InitialStateSpec& spec) {
     g.radius.resize(spec.count);
     g.mass.resize(spec.count);
     for (std::uint64_t i = 0; i < spec.count; ++i) {
-        const Real r = spec.radiusMax > spec.radius ? sizes.uniform(spec.radius, spec.radiusMax) : spec.radius;
+        const Real r =
+            spec.radiusMax > spec.radius ? sizes.uniform(spec.radius, spec.radiusMax) : spec.radius;
         g.radius[i] = r;
         g.mass[i] = spec.mass * std::pow(r / spec.radius, D);
     }
     g.x.reserve(spec.count);
-    if (spec.placement == Placement::Lattice) placeOnLattice(spec, g);
-    else placeAtRandom(spec, g);
+    if (spec.placement == Placement::Lattice)
+        placeOnLattice(spec, g);
+    else
+        placeAtRandom(spec, g);
     // Maxwell velocities: each component N(0, T0/m_i), then zero momentum, then rescaled so
     // that T = 2 E / (D N) is exactly T0 (edmd spec 4.2 step 2).
     CounterRng velocities(spec.seed, 0xED02);

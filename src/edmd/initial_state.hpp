@@ -18,18 +18,18 @@ struct InitialStateSpec {
     std::array<Real, 3> box{1, 1, 1};                ///< [m]
     std::array<bool, 3> periodic{true, true, true};  ///< false: walls at 0 and box (keep a radius away)
     std::uint64_t count = 0;
-    Real radius = 0;         ///< [m] radius (lower bound when radiusMax > radius)
-    Real radiusMax = 0;      ///< [m] radii uniform in [radius, radiusMax] when larger than radius
-    Real mass = 1;           ///< [kg] mass of a particle of radius `radius`; others scale as (r/radius)^D
+    Real radius = 0;     ///< [m] radius (lower bound when radiusMax > radius)
+    Real radiusMax = 0;  ///< [m] radii uniform in [radius, radiusMax] when larger than radius
+    Real mass = 1;       ///< [kg] mass of a particle of radius `radius`; others scale as (r/radius)^D
     Placement placement = Placement::Lattice;
-    Real temperature = 1;    ///< [J] T0 = m <v_x^2> (k_B = 1); the sample is rescaled to exactly T0
+    Real temperature = 1;  ///< [J] T0 = m <v_x^2> (k_B = 1); the sample is rescaled to exactly T0
     std::uint64_t seed = 1;
 };
 
 template <int D>
 struct GasState {
-    std::vector<VecD<D>> x, v;          ///< [m], [m/s]
-    std::vector<Real> radius, mass;     ///< [m], [kg]
+    std::vector<VecD<D>> x, v;       ///< [m], [m/s]
+    std::vector<Real> radius, mass;  ///< [m], [kg]
 };
 
 /// Builds the state; throws std::invalid_argument with a clear reason when the particles do not
@@ -38,6 +38,8 @@ template <int D>
 GasState<D> makeInitialState(const InitialStateSpec& spec);
 
 /// Volume (2D: area) of a D-ball of radius a [m^D].
-inline Real ballVolume(int dim, Real a) noexcept { return dim == 2 ? kPi * a * a : 4.0 / 3.0 * kPi * a * a * a; }
+inline Real ballVolume(int dim, Real a) noexcept {
+    return dim == 2 ? kPi * a * a : 4.0 / 3.0 * kPi * a * a * a;
+}
 
 }  // namespace granulab::edmd

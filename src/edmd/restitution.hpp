@@ -23,13 +23,14 @@ enum class RestitutionModel : std::uint8_t { Constant, McNamaraFalcon, Viscoelas
 
 struct Restitution {
     RestitutionModel model = RestitutionModel::Constant;
-    Real eps = 1;      ///< eps0: constant value, or the value at v >= v0 (mcnamara_falcon)
-    Real speed = 1;    ///< v0 [m/s]: the crossover (mcnamara_falcon) or characteristic speed (viscoelastic)
+    Real eps = 1;    ///< eps0: constant value, or the value at v >= v0 (mcnamara_falcon)
+    Real speed = 1;  ///< v0 [m/s]: the crossover (mcnamara_falcon) or characteristic speed (viscoelastic)
 
     /// Restitution for a normal impact speed |v_n| [m/s].
     Real operator()(Real normalSpeed) const noexcept {
         switch (model) {
-            case RestitutionModel::Constant: return eps;
+            case RestitutionModel::Constant:
+                return eps;
             case RestitutionModel::McNamaraFalcon:
                 return normalSpeed >= speed ? eps : 1 - (1 - eps) * std::pow(normalSpeed / speed, 0.75);
             case RestitutionModel::Viscoelastic: {

@@ -4,8 +4,9 @@
 // 4.3 [I]), the kinetic scales and the collapse warning; the initial state with the scene location.
 #include "edmd/scene_setup.hpp"
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <utility>
@@ -50,9 +51,11 @@ void resolveParticles(const Context& x, Setup& s, Diagnostics& d) {
         d.error(loc, "edmd.count", fmt::format("resolves to {} particles; allowed [1, 2^31]", count));
     s.volumeFraction = static_cast<Real>(count) * meanVolume / volume;
     if (s.volumeFraction >= (D == 2 ? 0.9069 : 0.7405))
-        d.error(loc, "edmd.volume_fraction", fmt::format("the particles fill {:.4f} of the box, beyond close packing", s.volumeFraction));
+        d.error(loc, "edmd.volume_fraction",
+                fmt::format("the particles fill {:.4f} of the box, beyond close packing", s.volumeFraction));
     s.init.box = box;
-    for (int k = 0; k < 3; ++k) s.init.periodic[k] = e.periodic.empty() ? true : (k < D ? static_cast<bool>(e.periodic[k]) : true);
+    for (int k = 0; k < 3; ++k)
+        s.init.periodic[k] = e.periodic.empty() ? true : (k < D ? static_cast<bool>(e.periodic[k]) : true);
     s.init.count = count;
     s.init.radius = e.radius;
     s.init.radiusMax = e.radiusMax;
@@ -60,7 +63,6 @@ void resolveParticles(const Context& x, Setup& s, Diagnostics& d) {
     s.init.placement = e.placement == "random" ? Placement::Random : Placement::Lattice;
     s.init.temperature = e.temperature;
     s.init.seed = sc.run.seed;
-
 }
 
 /// The engine configuration and the kinetic-theory scales of the initial state (t_E, lambda,
@@ -91,7 +93,6 @@ void configureEngine(const Context& x, Setup& s) {
     s.lambda = 1 - e.restitution * e.restitution;
     const bool dissipative = e.restitution < 1 || e.restitutionModel != "constant" || e.wallRestitution < 1;
     c.tc = e.tc >= 0 ? e.tc : (dissipative ? 1e-5 * s.tE : 0);
-
 }
 
 /// Run length (exactly one of run.end_time, edmd.end_tau, edmd.end_collisions), growth limits
@@ -104,24 +105,34 @@ void resolveRunLength(const Context& x, Setup& s, Diagnostics& d) {
     // Growth needs a periodic box; shrinking must stay above zero radius.
     if (e.growthRate != 0)
         for (int k = 0; k < D; ++k)
-            if (!c.periodic[k]) d.error(loc, "edmd.growth_rate", "growing spheres need a periodic box (all edmd.periodic true)");
+            if (!c.periodic[k])
+                d.error(loc, "edmd.growth_rate",
+                        "growing spheres need a periodic box (all edmd.periodic true)");
     // Run length: exactly one of run.end_time, edmd.end_tau, edmd.end_collisions.
     const int ends = (sc.run.endTime > 0 ? 1 : 0) + (e.endTau > 0 ? 1 : 0) + (e.endCollisions > 0 ? 1 : 0);
     if (ends != 1)
-        d.error(sc.run.loc, "run.end_time", fmt::format("give exactly one run length: run.end_time [s], edmd.end_tau (scaled time, "
-                                                        "Eq. 4.57) or edmd.end_collisions (per particle); got {}", ends));
-    if (sc.run.endTime < 0) d.error(sc.run.loc, "run.end_time", fmt::format("must be > 0 [s], got {}", sc.run.endTime));
+        d.error(sc.run.loc, "run.end_time",
+                fmt::format("give exactly one run length: run.end_time [s], edmd.end_tau (scaled time, "
+                            "Eq. 4.57) or edmd.end_collisions (per particle); got {}",
+                            ends));
+    if (sc.run.endTime < 0)
+        d.error(sc.run.loc, "run.end_time", fmt::format("must be > 0 [s], got {}", sc.run.endTime));
     if (e.endTau < 0) d.error(loc, "edmd.end_tau", fmt::format("must be > 0, got {}", e.endTau));
-    if (e.endCollisions < 0) d.error(loc, "edmd.end_collisions", fmt::format("must be > 0, got {}", e.endCollisions));
+    if (e.endCollisions < 0)
+        d.error(loc, "edmd.end_collisions", fmt::format("must be > 0, got {}", e.endCollisions));
     if (e.endTau > 0 && !(s.lambda > 0 && e.restitutionModel == "constant"))
-        d.error(loc, "edmd.end_tau", "tau = lambda t/(2 D t_E) needs a constant restitution below 1 (edmd.restitution < 1)");
-    s.endTime = sc.run.endTime > 0 ? sc.run.endTime
+        d.error(loc, "edmd.end_tau",
+                "tau = lambda t/(2 D t_E) needs a constant restitution below 1 (edmd.restitution < 1)");
+    s.endTime = sc.run.endTime > 0             ? sc.run.endTime
                 : e.endTau > 0 && s.lambda > 0 ? e.endTau * 2 * D * s.tE / s.lambda
                                                : std::numeric_limits<Real>::infinity();
-    s.endCollisions = e.endCollisions > 0 ? static_cast<std::uint64_t>(std::llround(e.endCollisions * count / 2.0)) : 0;
+    s.endCollisions =
+        e.endCollisions > 0 ? static_cast<std::uint64_t>(std::llround(e.endCollisions * count / 2.0)) : 0;
     s.equilibrationCollisions = static_cast<std::uint64_t>(std::llround(e.equilibrate * count / 2.0));
     if (e.growthRate < 0 && std::isfinite(s.endTime) && !(e.radius + e.growthRate * s.endTime > 0))
-        d.error(loc, "edmd.growth_rate", fmt::format("the radius {} m shrinks to zero before the end at t = {} s", e.radius, s.endTime));
+        d.error(
+            loc, "edmd.growth_rate",
+            fmt::format("the radius {} m shrinks to zero before the end at t = {} s", e.radius, s.endTime));
     if (e.series == "log" && !std::isfinite(s.endTime))
         d.error(loc, "edmd.series", "a logarithmic series needs an end time (run.end_time or edmd.end_tau)");
     // The box must hold 3 cells of the largest diameter per periodic axis (at the end when growing).
@@ -129,8 +140,9 @@ void resolveRunLength(const Context& x, Setup& s, Diagnostics& d) {
     if (e.growthRate > 0 && std::isfinite(s.endTime)) amax += e.growthRate * s.endTime;
     for (int k = 0; k < D; ++k)
         if (c.periodic[k] && box[k] < 6 * amax)
-            d.error(loc, "edmd.box", fmt::format("axis {}: the periodic edge {:.6g} m must hold 3 diameters ({:.6g} m){}", k, box[k],
-                                                 6 * amax, e.growthRate > 0 ? " at the end of the growth" : ""));
+            d.error(loc, "edmd.box",
+                    fmt::format("axis {}: the periodic edge {:.6g} m must hold 3 diameters ({:.6g} m){}", k,
+                                box[k], 6 * amax, e.growthRate > 0 ? " at the end of the growth" : ""));
 }
 
 /// Warnings: inelastic collapse without the TC model (spec 4.3).
@@ -139,9 +151,10 @@ void addWarnings(const Context& x, Setup& s) {
     const auto& c = s.config;
     const Real lOpt = opticalDepth(D, static_cast<Real>(s.init.count), std::min(s.volumeFraction, 0.6));
     if (lOpt > 1 && e.restitution < collapseRestitution(lOpt) && c.tc == 0)
-        s.warnings.push_back(fmt::format("restitution {} is below the inelastic-collapse threshold eps_ic = {:.4f} (edmd Eq. 4.8) and "
-                                         "the TC model is off (edmd.tc = 0): the run may stall in infinitely many collisions",
-                                         e.restitution, collapseRestitution(lOpt)));
+        s.warnings.push_back(fmt::format(
+            "restitution {} is below the inelastic-collapse threshold eps_ic = {:.4f} (edmd Eq. 4.8) and "
+            "the TC model is off (edmd.tc = 0): the run may stall in infinitely many collisions",
+            e.restitution, collapseRestitution(lOpt)));
 }
 
 }  // namespace
@@ -166,8 +179,9 @@ GasState<D> makeGasState(const model::SceneDef& scene, const Setup& setup) {
         return makeInitialState<D>(setup.init);
     } catch (const std::invalid_argument& e) {
         const auto& loc = scene.edmd.loc.file.empty() ? scene.run.loc : scene.edmd.loc;
-        throw SceneError(makeDiagnostic(loc.file, loc.line, scene.edmd.volumeFraction > 0 ? "edmd.volume_fraction" : "edmd.count",
-                                        fmt::format("cannot place {} particles: {}", setup.init.count, e.what())));
+        throw SceneError(makeDiagnostic(
+            loc.file, loc.line, scene.edmd.volumeFraction > 0 ? "edmd.volume_fraction" : "edmd.count",
+            fmt::format("cannot place {} particles: {}", setup.init.count, e.what())));
     }
 }
 

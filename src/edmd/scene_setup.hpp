@@ -16,12 +16,12 @@ namespace granulab::edmd {
 
 struct Setup {
     int dim = 3;
-    EngineConfig config;     ///< production run (restitution, TC, walls, gravity, growth)
-    InitialStateSpec init;   ///< resolved count, box and radii
-    Real volumeFraction = 0;       ///< nu of the initial state (Eq. 4.2-4.4; mean particle volume if polydisperse)
-    Real tE = 0;                   ///< [s] initial Enskog collision time 1/f_E(0) (Eq. 4.33, g from Eq. 4.52)
-    Real lambda = 0;               ///< 1 - eps^2 (Eq. 4.7), constant restitution
-    Real endTime = 0;              ///< [s] resolved end (run.end_time or edmd.end_tau); +inf with end_collisions
+    EngineConfig config;      ///< production run (restitution, TC, walls, gravity, growth)
+    InitialStateSpec init;    ///< resolved count, box and radii
+    Real volumeFraction = 0;  ///< nu of the initial state (Eq. 4.2-4.4; mean particle volume if polydisperse)
+    Real tE = 0;              ///< [s] initial Enskog collision time 1/f_E(0) (Eq. 4.33, g from Eq. 4.52)
+    Real lambda = 0;          ///< 1 - eps^2 (Eq. 4.7), constant restitution
+    Real endTime = 0;         ///< [s] resolved end (run.end_time or edmd.end_tau); +inf with end_collisions
     std::uint64_t endCollisions = 0;  ///< total collisions to run (edmd.end_collisions * N / 2), 0: unused
     std::uint64_t equilibrationCollisions = 0;  ///< elastic pre-run (edmd.equilibrate * N / 2)
     std::vector<std::string> warnings;

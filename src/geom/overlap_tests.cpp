@@ -37,8 +37,10 @@ bool segmentEntersPolygon(Vec2 a, Vec2 b, const std::vector<Vec2>& poly) {
         if (fa <= 0 && fb <= 0) return false;
         if (fa > 0 && fb > 0) continue;
         const Real t = fa / (fa - fb);
-        if (fa < fb) t0 = std::max(t0, t);  // entering this half-plane
-        else t1 = std::min(t1, t);          // leaving it
+        if (fa < fb)
+            t0 = std::max(t0, t);  // entering this half-plane
+        else
+            t1 = std::min(t1, t);  // leaving it
         if (t1 <= t0) return false;
     }
     return t1 - t0 > 1e-12;

@@ -79,8 +79,10 @@ PolygonOverlap convexOverlap(const Vec2* pi, int ni, const Vec2* pj, int nj, Cli
                 const Real t = sp / (sp - sq);
                 const Vec2 x = P.p + (Q.p - P.p) * t;
                 // Cutting an edge of i at j's edge is a crossing of the two boundaries.
-                if (pin) next.push_back({x, P.edgeOnI, false});   // leaving: continue along j's edge
-                else next.push_back({x, P.edgeOnI, P.edgeOnI});   // entering: continue along P's edge
+                if (pin)
+                    next.push_back({x, P.edgeOnI, false});  // leaving: continue along j's edge
+                else
+                    next.push_back({x, P.edgeOnI, P.edgeOnI});  // entering: continue along P's edge
             }
             if (qin) next.push_back(Q);
         }

@@ -23,7 +23,8 @@ PolygonMass polygonMass(const std::vector<Vec2>& ccw) noexcept;
 /// First problem of a corner list that is not a strictly convex, counter-clockwise, simple
 /// polygon: "" if fine; `corner` is the index of the offending corner.
 struct ShapeProblem {
-    std::string what;  ///< "fewer than 3 corners" | "clockwise" | "collinear" | "non-convex" | "self-intersecting" | "duplicate"
+    std::string what;  ///< "fewer than 3 corners" | "clockwise" | "collinear" | "non-convex" |
+                       ///< "self-intersecting" | "duplicate"
     int corner = -1;
     bool ok() const noexcept { return what.empty(); }
 };
@@ -32,11 +33,11 @@ ShapeProblem checkConvexPolygon(const std::vector<Vec2>& corners) noexcept;
 /// Overlap of two convex counter-clockwise polygons i and j (gc2d spec section 3.1).
 struct PolygonOverlap {
     bool overlapping = false;
-    Real area = 0;        ///< [m^2] area A of the overlap polygon
-    Vec2 c1, c2;          ///< [m] boundary crossing points; contact line c1c2
-    Vec2 point;           ///< [m] contact point (c1 + c2)/2
-    Vec2 normal;          ///< unit, perpendicular to c1c2, pushes i away from j
-    int crossings = 0;    ///< boundary crossings found (2 normally; more: the farthest pair is used)
+    Real area = 0;              ///< [m^2] area A of the overlap polygon
+    Vec2 c1, c2;                ///< [m] boundary crossing points; contact line c1c2
+    Vec2 point;                 ///< [m] contact point (c1 + c2)/2
+    Vec2 normal;                ///< unit, perpendicular to c1c2, pushes i away from j
+    int crossings = 0;          ///< boundary crossings found (2 normally; more: the farthest pair is used)
     std::vector<Vec2> polygon;  ///< the overlap polygon (counter-clockwise)
 };
 PolygonOverlap convexOverlap(const std::vector<Vec2>& i, const std::vector<Vec2>& j);

@@ -18,9 +18,9 @@ inline Real closestParameter(Vec2 a, Vec2 b, Vec2 p) noexcept {
 /// Contact of a disk with a wall segment: normal points from the wall to the disk centre.
 struct SegmentContact {
     bool touching = false;
-    Real overlap = 0;   ///< [m] r - distance (> 0 when touching)
-    Vec2 normal;        ///< unit, wall -> disk centre
-    Vec2 point;         ///< [m] closest point on the segment
+    Real overlap = 0;  ///< [m] r - distance (> 0 when touching)
+    Vec2 normal;       ///< unit, wall -> disk centre
+    Vec2 point;        ///< [m] closest point on the segment
 };
 
 /// Disk (centre c, radius r) against segment [a,b] of a polyline. A corner shared by two
@@ -28,9 +28,8 @@ struct SegmentContact {
 /// the end of the previous segment (the corner's Voronoi region); a shared end corner is never
 /// claimed. So a disk at a convex joint gets one contact, and one in a concave joint one per
 /// face. `reach` > 0 extends the test to near misses (broad-phase candidates).
-inline SegmentContact diskSegmentContact(Vec2 c, Real r, Vec2 a, Vec2 b, bool startShared,
-                                         bool endShared, Vec2 prevDirection,
-                                         Real reach = 0) noexcept {
+inline SegmentContact diskSegmentContact(Vec2 c, Real r, Vec2 a, Vec2 b, bool startShared, bool endShared,
+                                         Vec2 prevDirection, Real reach = 0) noexcept {
     SegmentContact out;
     const Vec2 d = b - a;
     const Real len2 = norm2(d);

@@ -22,7 +22,9 @@ AtomicFile::~AtomicFile() {
     std::filesystem::remove(m_tmp, ignored);
 }
 
-void AtomicFile::write(const std::string& text) { std::fwrite(text.data(), 1, text.size(), m_file); }
+void AtomicFile::write(const std::string& text) {
+    std::fwrite(text.data(), 1, text.size(), m_file);
+}
 
 void AtomicFile::commit() {
     const bool ok = std::ferror(m_file) == 0;

@@ -2,8 +2,9 @@
 // Checkpoint container (io/checkpoint.hpp): header, identity check, engine blob with its length.
 #include "io/checkpoint.hpp"
 
-#include <filesystem>
 #include <fmt/format.h>
+
+#include <filesystem>
 #include <fstream>
 #include <stdexcept>
 
@@ -12,8 +13,8 @@
 namespace granulab::io {
 
 namespace {
-constexpr std::uint64_t kMagic = 0x544b434c42414e47ULL;          // "GNABLCKT"
-constexpr std::uint64_t kOldEdmdMagic = 0x31444d4445424c47ULL;   // "GLBEDMD1": edmd files before version 5
+constexpr std::uint64_t kMagic = 0x544b434c42414e47ULL;         // "GNABLCKT"
+constexpr std::uint64_t kOldEdmdMagic = 0x31444d4445424c47ULL;  // "GLBEDMD1": edmd files before version 5
 
 std::string describe(const SceneIdentity& id) {
     std::string s;
@@ -71,20 +72,23 @@ RunBookkeeping readCheckpoint(const std::string& dir, const CheckpointHeader& ex
     if (!in) throw std::runtime_error(fmt::format("no checkpoint at {} (run without --resume first)", path));
     const auto magic = readPod<std::uint64_t>(in);
     if (magic == kOldEdmdMagic)
-        throw std::runtime_error(fmt::format("{} is an edmd checkpoint of format version 1 (unversioned, before granulab "
-                                             "checkpoints had one container); this build reads version {}: rerun the scene "
-                                             "without --resume",
-                                             path, kCheckpointVersion));
+        throw std::runtime_error(
+            fmt::format("{} is an edmd checkpoint of format version 1 (unversioned, before granulab "
+                        "checkpoints had one container); this build reads version {}: rerun the scene "
+                        "without --resume",
+                        path, kCheckpointVersion));
     if (!in || magic != kMagic) throw std::runtime_error(path + " is not a granulab checkpoint");
     if (const auto v = readPod<std::uint32_t>(in); v != kCheckpointVersion)
-        throw std::runtime_error(fmt::format("{} has format version {}, this build reads version {}: rerun the scene "
-                                             "without --resume (or with the granulab version that wrote it)",
-                                             path, v, kCheckpointVersion));
+        throw std::runtime_error(
+            fmt::format("{} has format version {}, this build reads version {}: rerun the scene "
+                        "without --resume (or with the granulab version that wrote it)",
+                        path, v, kCheckpointVersion));
     CheckpointHeader h;
     h.engine = readString(in);
     if (h.engine != expected.engine)
-        throw std::runtime_error(fmt::format("{} was written by the {} engine; this scene runs run.engine = \"{}\"", path,
-                                             h.engine, expected.engine));
+        throw std::runtime_error(
+            fmt::format("{} was written by the {} engine; this scene runs run.engine = \"{}\"", path,
+                        h.engine, expected.engine));
     const auto entries = readPod<std::uint64_t>(in);
     if (!in || entries > 1000) throw std::runtime_error(path + " is corrupt (identity)");
     for (std::uint64_t k = 0; k < entries; ++k) {
@@ -94,16 +98,18 @@ RunBookkeeping readCheckpoint(const std::string& dir, const CheckpointHeader& ex
         h.identity.push_back(e);
     }
     const auto print = readPod<std::uint64_t>(in);
-    if (!in || print != fingerprint(h.identity)) throw std::runtime_error(path + " is corrupt (scene fingerprint)");
+    if (!in || print != fingerprint(h.identity))
+        throw std::runtime_error(path + " is corrupt (scene fingerprint)");
     if (print != fingerprint(expected.identity)) {
         // Name the first user-settable entry that differs, with the setting that resumes.
         for (const auto& want : expected.identity)
             for (const auto& got : h.identity)
                 if (got.key == want.key && got.value != want.value && want.key.find('.') != std::string::npos)
-                    throw std::runtime_error(fmt::format("{} was written with {} '{}' (this scene: '{}'); resume with --set {}={}",
-                                                         path, got.key, got.value, want.value, got.key, got.value));
-        throw std::runtime_error(fmt::format("{} belongs to another scene ({}; this scene: {})", path, describe(h.identity),
-                                             describe(expected.identity)));
+                    throw std::runtime_error(
+                        fmt::format("{} was written with {} '{}' (this scene: '{}'); resume with --set {}={}",
+                                    path, got.key, got.value, want.value, got.key, got.value));
+        throw std::runtime_error(fmt::format("{} belongs to another scene ({}; this scene: {})", path,
+                                             describe(h.identity), describe(expected.identity)));
     }
     RunBookkeeping book;
     book.nextSnapshot = readPod<std::int64_t>(in);
@@ -112,7 +118,8 @@ RunBookkeeping readCheckpoint(const std::string& dir, const CheckpointHeader& ex
     const auto blobStart = in.tellg();
     loadEngine(in);
     if (!in || static_cast<std::uint64_t>(in.tellg() - blobStart) != length)
-        throw std::runtime_error(fmt::format("{} is corrupt or truncated (the engine state is not {} bytes)", path, length));
+        throw std::runtime_error(
+            fmt::format("{} is corrupt or truncated (the engine state is not {} bytes)", path, length));
     return book;
 }
 

@@ -2,16 +2,17 @@
 // series.csv and the final.csv of a particle store.
 #include "io/csv_writers.hpp"
 
-#include "io/atomic_file.hpp"
-#include "io/final_csv.hpp"
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <filesystem>
-#include <fmt/format.h>
 #include <fstream>
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
+
+#include "io/atomic_file.hpp"
+#include "io/final_csv.hpp"
 
 namespace granulab::io {
 
@@ -44,12 +45,15 @@ SeriesWriter::~SeriesWriter() {
 
 void SeriesWriter::row(const std::vector<double>& values) {
     std::string line;
-    for (std::size_t k = 0; k < values.size() && k < m_columns; ++k) line += fmt::format("{}{:.17g}", k ? "," : "", values[k]);
+    for (std::size_t k = 0; k < values.size() && k < m_columns; ++k)
+        line += fmt::format("{}{:.17g}", k ? "," : "", values[k]);
     line += "\n";
     std::fputs(line.c_str(), m_file);
 }
 
-void SeriesWriter::flush() { std::fflush(m_file); }
+void SeriesWriter::flush() {
+    std::fflush(m_file);
+}
 
 void writeFinalCsv(const std::string& path, const model::ParticleStore& s, const model::ShapePool& shapes,
                    const std::vector<std::string>& materialNames, model::MassModel massModel) {
@@ -61,8 +65,9 @@ void writeFinalCsv(const std::string& path, const model::ParticleStore& s, const
     if (hasShapes)
         for (std::size_t i = 0; i < s.size(); ++i)
             if (s.shape[i] != model::kDiskShape && s.shape[i] >= shapes.size())
-                throw std::invalid_argument(fmt::format("{}: particle {} refers to shape {}, the pool holds {}", path,
-                                                        s.id[i], s.shape[i], shapes.size()));
+                throw std::invalid_argument(
+                    fmt::format("{}: particle {} refers to shape {}, the pool holds {}", path, s.id[i],
+                                s.shape[i], shapes.size()));
     FinalCsvWriter out(path, {2, true, {"mass", "material", "corners"}});
     for (const std::size_t i : order) {
         const bool polygon = hasShapes && s.shape[i] != model::kDiskShape;
@@ -78,7 +83,8 @@ void writeFinalCsv(const std::string& path, const model::ParticleStore& s, const
         p.radius = s.radius[i];
         out.row(p);
         out.extra(s.mass[i]);
-        out.extra(std::string_view(s.material[i] < materialNames.size() ? materialNames[s.material[i]] : "?"));
+        out.extra(
+            std::string_view(s.material[i] < materialNames.size() ? materialNames[s.material[i]] : "?"));
         out.extra(std::uint64_t{polygon ? shapes.count[s.shape[i]] : 0u});
         out.endRow();
     }

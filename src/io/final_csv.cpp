@@ -6,15 +6,18 @@
 
 namespace granulab::io {
 
-FinalCsvWriter::FinalCsvWriter(const std::string& path, FinalCsvLayout layout) : m_layout(std::move(layout)), m_file(path) {
+FinalCsvWriter::FinalCsvWriter(const std::string& path, FinalCsvLayout layout)
+    : m_layout(std::move(layout)), m_file(path) {
     static const char* const kAxis[3] = {"x", "y", "z"};
     const int D = m_layout.dim;
     std::string header = "id,shape";
     for (int d = 0; d < D; ++d) header += std::string(",") + kAxis[d];
     for (int d = 0; d < D; ++d) header += std::string(",v") + kAxis[d];
     if (m_layout.angle) header += ",angle";
-    if (D == 2) header += ",omega";
-    else header += ",omega_x,omega_y,omega_z";
+    if (D == 2)
+        header += ",omega";
+    else
+        header += ",omega_x,omega_y,omega_z";
     header += ",radius";
     for (const auto& e : m_layout.extras) header += "," + e;
     m_file.write(header + "\n");
@@ -28,8 +31,10 @@ void FinalCsvWriter::row(const FinalCsvParticle& p) {
     for (int d = 0; d < D; ++d) fmt::format_to(out, ",{:.17g}", p.x[d]);
     for (int d = 0; d < D; ++d) fmt::format_to(out, ",{:.17g}", p.v[d]);
     if (m_layout.angle) fmt::format_to(out, ",{:.17g}", p.angle);
-    if (D == 2) fmt::format_to(out, ",{:.17g}", p.omega[2]);
-    else fmt::format_to(out, ",{:.17g},{:.17g},{:.17g}", p.omega[0], p.omega[1], p.omega[2]);
+    if (D == 2)
+        fmt::format_to(out, ",{:.17g}", p.omega[2]);
+    else
+        fmt::format_to(out, ",{:.17g},{:.17g},{:.17g}", p.omega[0], p.omega[1], p.omega[2]);
     fmt::format_to(out, ",{:.17g}", p.radius);
 }
 

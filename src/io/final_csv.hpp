@@ -6,12 +6,12 @@
 // extra columns follow (dem: mass, material, corners; edmd: mass, collisions). New columns are
 // appended, so readers of older files keep working. Reals carry 17 significant digits.
 #pragma once
+#include <fmt/format.h>
+
 #include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <fmt/format.h>
 
 #include "core/types.hpp"
 #include "io/atomic_file.hpp"
@@ -27,12 +27,12 @@ struct FinalCsvLayout {
 /// The contract's values of one particle (SI units; unused components ignored).
 struct FinalCsvParticle {
     std::uint64_t id = 0;
-    std::string_view shape;  ///< disk, sphere or polygon
-    Real x[3] = {0, 0, 0};   ///< [m]
-    Real v[3] = {0, 0, 0};   ///< [m/s]
-    Real angle = 0;          ///< [rad]
+    std::string_view shape;     ///< disk, sphere or polygon
+    Real x[3] = {0, 0, 0};      ///< [m]
+    Real v[3] = {0, 0, 0};      ///< [m/s]
+    Real angle = 0;             ///< [rad]
     Real omega[3] = {0, 0, 0};  ///< [rad/s]; 2D uses omega[2]
-    Real radius = 0;         ///< [m]
+    Real radius = 0;            ///< [m]
 };
 
 /// Streams final.csv row by row (a 1e6-particle file is ~200 MB) into an AtomicFile.

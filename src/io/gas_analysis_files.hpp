@@ -13,10 +13,10 @@
 namespace granulab::io {
 
 struct GasAnalysisSettings {
-    Real radius = 0;             ///< [m] particle radius a (g(r) range and contact value)
-    Real rMaxRadii = 10;         ///< g(r) up to this many radii (capped below half the periodic box)
+    Real radius = 0;      ///< [m] particle radius a (g(r) range and contact value)
+    Real rMaxRadii = 10;  ///< g(r) up to this many radii (capped below half the periodic box)
     std::size_t grBins = 200;
-    Real clusterDelta = 0.1;     ///< delta/2a (edmd Eq. 5.11)
+    Real clusterDelta = 0.1;  ///< delta/2a (edmd Eq. 5.11)
 };
 
 /// What the files were made from, for summaries.
@@ -29,7 +29,7 @@ struct GasAnalysisResult {
 /// and cluster statistics of the same snapshot are passed in (the caller computes them once).
 GasAnalysisResult writeGasAnalysisFiles(const std::string& pathPattern, const analysis::PointSet& points,
                                         const analysis::DensityDistribution& density,
-                                        const analysis::ClusterStats& clusters, const GasAnalysisSettings& settings,
-                                        double time);
+                                        const analysis::ClusterStats& clusters,
+                                        const GasAnalysisSettings& settings, double time);
 
 }  // namespace granulab::io

@@ -2,11 +2,11 @@
 // `--set key=value` overrides (io/scene_override.hpp; docs/scene-format.md "Command-line overrides").
 #include "io/scene_override.hpp"
 
-#include "io/toml_table_reader.hpp"
-
 #include <fmt/format.h>
 
 #include <vector>
+
+#include "io/toml_table_reader.hpp"
 
 namespace granulab::io {
 

@@ -18,5 +18,4 @@ struct Override {
 /// Parses `key=value`; throws SceneError on a malformed override.
 Override parseOverride(const std::string& text);
 
-
 }  // namespace granulab::io

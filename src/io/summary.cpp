@@ -22,11 +22,13 @@ void writeSummary(const std::string& path, const SummaryCommon& c, const nlohman
     js["wall_time_s"] = c.wallTime;
     js["loop_time_s"] = c.loopTime;
     js["memory_bytes"] = c.memoryBytes;
-    js["bytes_per_particle"] = c.particles > 0 ? static_cast<double>(c.memoryBytes) / static_cast<double>(c.particles) : 0.0;
+    js["bytes_per_particle"] =
+        c.particles > 0 ? static_cast<double>(c.memoryBytes) / static_cast<double>(c.particles) : 0.0;
     js["peak_rss_bytes"] = peakRssBytes();
     js["warnings"] = c.warnings;
     for (const auto& [key, value] : engineKeys.items()) {
-        if (js.contains(key)) throw std::logic_error("summary.json: engine key '" + key + "' repeats a common key");
+        if (js.contains(key))
+            throw std::logic_error("summary.json: engine key '" + key + "' repeats a common key");
         js[key] = value;
     }
     writeFileAtomically(path, js.dump(2) + "\n");

@@ -4,10 +4,9 @@
 // ...; edmd: events, collisions, events_per_s, collisions_per_s, ...).
 #pragma once
 #include <cstddef>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 namespace granulab::io {
 
@@ -18,9 +17,9 @@ struct SummaryCommon {
     bool completed = true;  ///< status "completed", else "unstable" with `diagnosis`
     std::string diagnosis;
     std::size_t particles = 0;
-    double simTime = 0;     ///< [s] simulated time at the end
-    double wallTime = 0;    ///< [s] whole command
-    double loopTime = 0;    ///< [s] run loop (engine + outputs), this session
+    double simTime = 0;           ///< [s] simulated time at the end
+    double wallTime = 0;          ///< [s] whole command
+    double loopTime = 0;          ///< [s] run loop (engine + outputs), this session
     std::size_t memoryBytes = 0;  ///< engine state [bytes]
     std::vector<std::string> warnings;
 };

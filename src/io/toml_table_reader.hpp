@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "core/error.hpp"
-#include "io/scene_override.hpp"
 #include "core/types.hpp"
+#include "io/scene_override.hpp"
 
 namespace granulab::io {
 

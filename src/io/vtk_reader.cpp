@@ -101,8 +101,8 @@ public:
                 a.components = parseNumber<int>(comps, path, "NumberOfComponents");
                 a.offset = parseNumber<std::uint64_t>(offset, path, "offset");
                 m_arrays.push_back(std::move(a));
-            } else if (name == "FieldData" || name == "PointData" || name == "CellData" ||
-                       name == "Points" || name == "Verts" || name == "Lines" || name == "Polys") {
+            } else if (name == "FieldData" || name == "PointData" || name == "CellData" || name == "Points" ||
+                       name == "Verts" || name == "Lines" || name == "Polys") {
                 section = std::string(name);
             }
         });
@@ -167,7 +167,8 @@ ParticleFrame readParticlesVtp(const std::string& path) {
     const auto angle = f.has("PointData", "angle") ? f.read<double>("PointData", "angle", "Float64", 1)
                                                    : std::vector<double>(nPoints, 0.0);
     const auto id = f.read<std::int64_t>("PointData", "id", "Int64", 1);
-    if (radius.size() != nPoints || speed.size() != nPoints || angle.size() != nPoints || id.size() != nPoints)
+    if (radius.size() != nPoints || speed.size() != nPoints || angle.size() != nPoints ||
+        id.size() != nPoints)
         f.fail("point data arrays differ in length from Points");
     const auto pointIndex = [&](std::int64_t p) {
         if (p < 0 || static_cast<std::uint64_t>(p) >= nPoints) f.fail("cell point index out of range");
@@ -224,7 +225,8 @@ ParticleFrame readParticlesVtp(const std::string& path) {
         frame.cornerStart.push_back(frame.corners.size());
         start = end;
     }
-    if (start != static_cast<std::int64_t>(polyConnectivity.size())) f.fail("polygon connectivity has unused entries");
+    if (start != static_cast<std::int64_t>(polyConnectivity.size()))
+        f.fail("polygon connectivity has unused entries");
     return frame;
 }
 

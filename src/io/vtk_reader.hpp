@@ -13,7 +13,7 @@ namespace granulab::io {
 /// Particle columns of one snapshot, in file cell order: the disks (vertex cells), then the
 /// polygons (polygon cells; files written before polygons existed have none).
 struct ParticleFrame {
-    double time = 0;                              ///< [s]
+    double time = 0;                                 ///< [s]
     std::vector<double> x, y, radius, speed, angle;  ///< [m], [m], [m] (polygons: circumradius), [m/s], [rad]
     std::vector<std::int64_t> id;
     /// Polygon outlines: the world corners (counter-clockwise) of particle i are

@@ -5,7 +5,7 @@
 // each DataArray's `offset` points at its byte count, counted from the first byte after "_".
 #include "io/vtk_writer.hpp"
 
-#include "io/atomic_file.hpp"
+#include <fmt/format.h>
 
 #include <bit>
 #include <charconv>
@@ -15,7 +15,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include <fmt/format.h>
+#include "io/atomic_file.hpp"
 
 namespace granulab::io {
 
@@ -54,9 +54,10 @@ public:
 
     void save(const std::string& path) const {
         AtomicFile file(path);
-        file.write("<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" "
-                   "header_type=\"UInt64\">\n  <PolyData>\n" +
-                   m_xml + "  </PolyData>\n  <AppendedData encoding=\"raw\">\n_");
+        file.write(
+            "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" "
+            "header_type=\"UInt64\">\n  <PolyData>\n" +
+            m_xml + "  </PolyData>\n  <AppendedData encoding=\"raw\">\n_");
         file.write(m_blob);
         file.write("\n  </AppendedData>\n</VTKFile>\n");
         file.commit();
@@ -68,9 +69,10 @@ private:
 };
 
 std::string pieceTag(std::size_t points, std::size_t verts, std::size_t lines, std::size_t polys = 0) {
-    return fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfVerts=\"{}\" NumberOfLines=\"{}\" "
-                       "NumberOfStrips=\"0\" NumberOfPolys=\"{}\">",
-                       points, verts, lines, polys);
+    return fmt::format(
+        "    <Piece NumberOfPoints=\"{}\" NumberOfVerts=\"{}\" NumberOfLines=\"{}\" "
+        "NumberOfStrips=\"0\" NumberOfPolys=\"{}\">",
+        points, verts, lines, polys);
 }
 
 /// Per-particle arrays of the particle file, one entry per point or per cell.
@@ -120,10 +122,11 @@ void writeParticles(const std::string& path, const model::ParticleStore& s, cons
                     double time) {
     const std::size_t n = s.size();
     const auto polygonShape = [&](std::size_t i) -> std::uint32_t {  // kDiskShape for disks
-        if (shapes == nullptr || s.shape.size() != n || s.shape[i] == model::kDiskShape) return model::kDiskShape;
+        if (shapes == nullptr || s.shape.size() != n || s.shape[i] == model::kDiskShape)
+            return model::kDiskShape;
         if (s.shape[i] >= shapes->size())
-            throw std::invalid_argument(fmt::format("{}: particle {} refers to shape {}, the pool holds {}", path,
-                                                    s.id[i], s.shape[i], shapes->size()));
+            throw std::invalid_argument(fmt::format("{}: particle {} refers to shape {}, the pool holds {}",
+                                                    path, s.id[i], s.shape[i], shapes->size()));
         return s.shape[i];
     };
     std::size_t disks = 0, polygons = 0, polyPoints = 0;
@@ -153,7 +156,8 @@ void writeParticles(const std::string& path, const model::ParticleStore& s, cons
             points.insert(points.end(), {s.x[i], s.y[i], 0.0});
             pointData.add(s, i, s.radius[i]);
             vertConnectivity.push_back(first);
-            vertOffsets.push_back(static_cast<std::int64_t>(vertConnectivity.size()));  // end offsets (VTK XML 1.0)
+            vertOffsets.push_back(
+                static_cast<std::int64_t>(vertConnectivity.size()));  // end offsets (VTK XML 1.0)
             if (polygons > 0) {
                 diskCells.add(s, i, s.radius[i]);
                 diskPosition.insert(diskPosition.end(), {s.x[i], s.y[i], 0.0});
@@ -164,7 +168,8 @@ void writeParticles(const std::string& path, const model::ParticleStore& s, cons
         const std::uint32_t count = shapes->count[k];
         for (std::uint32_t c = 0; c < count; ++c) {
             const Vec2 body = shapes->corners[shapes->start[k] + c];
-            points.insert(points.end(), {s.x[i] + (cs * body.x - sn * body.y), s.y[i] + (sn * body.x + cs * body.y), 0.0});
+            points.insert(points.end(),
+                          {s.x[i] + (cs * body.x - sn * body.y), s.y[i] + (sn * body.x + cs * body.y), 0.0});
             pointData.add(s, i, 0.0);
             polyConnectivity.push_back(first + c);
         }
@@ -317,11 +322,12 @@ void PvdWriter::add(double time, int part, const std::string& relativeFile) {
 }
 
 void PvdWriter::write() const {
-    std::string text = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"1.0\" byte_order=\"LittleEndian\" "
-                       "header_type=\"UInt64\">\n  <Collection>\n";
+    std::string text =
+        "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"1.0\" byte_order=\"LittleEndian\" "
+        "header_type=\"UInt64\">\n  <Collection>\n";
     for (const PvdEntry& e : m_entries)
-        text += "    <DataSet timestep=\"" + exactText(e.time) + "\" group=\"\" part=\"" + std::to_string(e.part) +
-                "\" file=\"" + e.file + "\"/>\n";
+        text += "    <DataSet timestep=\"" + exactText(e.time) + "\" group=\"\" part=\"" +
+                std::to_string(e.part) + "\" file=\"" + e.file + "\"/>\n";
     text += "  </Collection>\n</VTKFile>\n";
     writeFileAtomically(m_path, text);
 }
@@ -337,8 +343,8 @@ void PvdWriter::truncateAfter(double time) {
 }
 
 namespace {
-void snapshot(const std::string& outDir, int index, const model::ParticleStore& s, const model::ShapePool* shapes,
-              const model::WallSet& w, double time, PvdWriter& pvd) {
+void snapshot(const std::string& outDir, int index, const model::ParticleStore& s,
+              const model::ShapePool* shapes, const model::WallSet& w, double time, PvdWriter& pvd) {
     const std::filesystem::path dir(outDir);
     const std::string particles = snapshotFileName("particles", index);
     const std::string walls = snapshotFileName("walls", index);

@@ -23,8 +23,8 @@
 #include <string>
 #include <vector>
 
-#include "io/vtk_reader.hpp"
 #include "analysis/point_set.hpp"
+#include "io/vtk_reader.hpp"
 #include "model/particle_store.hpp"
 #include "model/shape_pool.hpp"
 #include "model/walls.hpp"
@@ -39,8 +39,8 @@ namespace granulab::io {
 /// `shapes` is the pool the store's `shape` column refers to; a shape index outside it throws
 /// std::invalid_argument. Creates the parent folder if needed; throws std::runtime_error when
 /// the file cannot be written.
-void writeParticlesVtp(const std::string& path, const model::ParticleStore& s,
-                       const model::ShapePool& shapes, double time);
+void writeParticlesVtp(const std::string& path, const model::ParticleStore& s, const model::ShapePool& shapes,
+                       double time);
 /// Without a shape pool: every particle is written as a vertex with its radius (a polygon
 /// particle with its circumradius, like a disk).
 void writeParticlesVtp(const std::string& path, const model::ParticleStore& s, double time);
@@ -52,8 +52,8 @@ void writeWallsVtp(const std::string& path, const model::WallSet& w, double time
 /// Hard-sphere gas snapshot (edmd engine): points in 3D (z = 0 for disks), point data id,
 /// radius [m], velocity [m/s], speed [m/s] and collisions (per particle, for colouring as in the
 /// thesis' Figs. 1.1, 4.4, 5.1).
-void writeGasVtp(const std::string& path, const analysis::PointSet& gas, const std::vector<std::uint64_t>& ids,
-                 const std::vector<double>& collisions, double time);
+void writeGasVtp(const std::string& path, const analysis::PointSet& gas,
+                 const std::vector<std::uint64_t>& ids, const std::vector<double>& collisions, double time);
 
 /// "vtk/<stem>_NNNNNN.vtp" (6-digit snapshot index), relative to the output folder.
 std::string snapshotFileName(const std::string& stem, int index);

@@ -20,7 +20,9 @@ std::vector<Vec2> ellipsePolygon(Real a, Real b, int n) {
     return c;
 }
 
-std::vector<Vec2> regularPolygon(int n, Real r) { return ellipsePolygon(r, r, n); }
+std::vector<Vec2> regularPolygon(int n, Real r) {
+    return ellipsePolygon(r, r, n);
+}
 
 std::vector<Vec2> rectangle(Real a, Real b, Real chamfer) {
     const Real x = 0.5 * a, y = 0.5 * b;
@@ -66,9 +68,12 @@ std::vector<Real> drawAngles(const std::string& mode, int n, CounterRng& rng) {
     const Real step = 2 * kPi / n;
     for (int i = 0; i < n; ++i) {
         Real p = i * step;  // "regular"
-        if (mode == "rand1") p = rng.uniform((i - 0.5) * step, (i + 0.5) * step);
-        else if (mode == "rand2") p = rng.uniform((i - 1.0) * step, (i + 1.0) * step);
-        else if (mode == "full") p = rng.uniform(0, 2 * kPi);
+        if (mode == "rand1")
+            p = rng.uniform((i - 0.5) * step, (i + 0.5) * step);
+        else if (mode == "rand2")
+            p = rng.uniform((i - 1.0) * step, (i + 1.0) * step);
+        else if (mode == "full")
+            p = rng.uniform(0, 2 * kPi);
         // Reduce to [0, 2 pi) before sorting, so that the corners go round the ellipse once.
         p = std::fmod(p, 2 * kPi);
         if (p < 0) p += 2 * kPi;
@@ -102,7 +107,8 @@ void cornersOnEllipse(Real a, Real b, Real tol, std::vector<Real>& phi, std::vec
 Grain randomGrain(const ShapeDef& d, CounterRng& rng) {
     Grain g;
     const Vec2 l = d.fullAxes ? d.size * 0.5 : d.size;
-    g.semiAxes = {drawAxis(d.sizeMode, l.x, d.sizeVariation, rng), drawAxis(d.sizeMode, l.y, d.sizeVariation, rng)};
+    g.semiAxes = {drawAxis(d.sizeMode, l.x, d.sizeVariation, rng),
+                  drawAxis(d.sizeMode, l.y, d.sizeVariation, rng)};
     const Real a = g.semiAxes.x, b = g.semiAxes.y;
     if (d.cornerAngles == "special_rectangle") {
         g.corners = rectangle(2 * a, 2 * b, kSpecialRectangleChamfer);

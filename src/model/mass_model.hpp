@@ -10,8 +10,12 @@
 namespace granulab::model {
 
 /// Mass [kg] and moment of inertia [kg m^2] of a disk of radius r [m] and areal density rho.
-inline Real diskMass(Real rho, Real r) noexcept { return rho * kPi * r * r; }
-inline Real diskInertia(Real mass, Real r) noexcept { return 0.5 * mass * r * r; }
+inline Real diskMass(Real rho, Real r) noexcept {
+    return rho * kPi * r * r;
+}
+inline Real diskInertia(Real mass, Real r) noexcept {
+    return 0.5 * mass * r * r;
+}
 
 /// How a 2D particle of radius r gets its mass: a disk (coin) of areal density [kg/m^2], as in
 /// gc2d and LAMMPS density/disc, or a sphere moving in the plane, density [kg/m^3], as in the

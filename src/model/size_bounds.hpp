@@ -6,7 +6,11 @@
 
 namespace granulab::model {
 
-inline Real minRadius(const SizeDistDef& d) noexcept { return d.kind == SizeDistDef::Kind::Constant ? d.value : d.min; }
-inline Real maxRadius(const SizeDistDef& d) noexcept { return d.kind == SizeDistDef::Kind::Constant ? d.value : d.max; }
+inline Real minRadius(const SizeDistDef& d) noexcept {
+    return d.kind == SizeDistDef::Kind::Constant ? d.value : d.min;
+}
+inline Real maxRadius(const SizeDistDef& d) noexcept {
+    return d.kind == SizeDistDef::Kind::Constant ? d.value : d.max;
+}
 
 }  // namespace granulab::model

@@ -12,9 +12,9 @@
 namespace granulab::model {
 
 struct WallSegment {
-    Vec2 a, b;             ///< [m] end points, current position
-    Vec2 a0, b0;           ///< [m] end points at t = 0
-    std::uint32_t wall;    ///< index of the wall (polyline) it belongs to
+    Vec2 a, b;           ///< [m] end points, current position
+    Vec2 a0, b0;         ///< [m] end points at t = 0
+    std::uint32_t wall;  ///< index of the wall (polyline) it belongs to
     std::uint32_t material;
     bool startShared = false;  ///< a is also the end b of the previous segment of the wall
     bool endShared = false;    ///< b is also the start a of the next segment
@@ -24,7 +24,7 @@ struct WallSegment {
 struct Wall {
     std::string name;
     std::uint32_t firstSegment = 0, segmentCount = 0;
-    Vec2 velocity;        ///< [m/s] prescribed rigid translation
+    Vec2 velocity;  ///< [m/s] prescribed rigid translation
 };
 
 struct WallSet {

@@ -1,9 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Command-line behaviour: the bad-input table (each malformed scene gives its specific message
 // and exit status 2), bit-for-bit resume, determinism, info/help/version.
-#include <gtest/gtest.h>
-
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 
 #include "../support.hpp"
 
@@ -39,7 +38,7 @@ std::string replace(std::string s, const std::string& from, const std::string& t
 
 struct BadCase {
     const char* name;
-    std::string scene;     ///< scene text ("" = do not write the file)
+    std::string scene;  ///< scene text ("" = do not write the file)
     std::string extraArgs;
     std::vector<std::string> expect;  ///< substrings of the message
 };
@@ -48,54 +47,105 @@ struct BadCase {
 TEST(Cli, BadInputTable) {
     const test::ScratchDir scratch;
     const auto& dir = scratch.path;
-    const std::string kHex = "[[shape]]\nname = \"hex\"\nkind = \"regular\"\ncorner_count = 6\nradius = 0.01\n";
+    const std::string kHex =
+        "[[shape]]\nname = \"hex\"\nkind = \"regular\"\ncorner_count = 6\nradius = 0.01\n";
     const BadCase cases[] = {
         {"syntax", "[run\nend_time = 1\n", "", {"bad.toml:1", "syntax error"}},
-        {"unknown_key", replace(kGood, "dt = 1e-5", "dtt = 1e-5"), "", {"bad.toml:4", "dem.dtt", "did you mean 'dt'"}},
-        {"negative_radius", replace(kGood, "radius = 0.01\nmaterial = \"g\"\n[[particle]]", "radius = -0.01\nmaterial = \"g\"\n[[particle]]"),
-         "", {"bad.toml:11", "particle[0].radius", "must be > 0", "(0, inf)"}},
+        {"unknown_key",
+         replace(kGood, "dt = 1e-5", "dtt = 1e-5"),
+         "",
+         {"bad.toml:4", "dem.dtt", "did you mean 'dt'"}},
+        {"negative_radius",
+         replace(kGood, "radius = 0.01\nmaterial = \"g\"\n[[particle]]",
+                 "radius = -0.01\nmaterial = \"g\"\n[[particle]]"),
+         "",
+         {"bad.toml:11", "particle[0].radius", "must be > 0", "(0, inf)"}},
         {"overlap", replace(kGood, "[0.05, 0.0]", "[0.015, 0.0]"), "", {"overlap by", "bad.toml:15"}},
         {"nan", replace(kGood, "dt = 1e-5", "dt = nan"), "", {"bad.toml:4", "dem.dt", "finite"}},
         {"missing_file", "", "", {"missing.toml", "cannot open scene file"}},
-        {"unstable_dt", replace(kGood, "dt = 1e-5", "dt = 1e-3"), "", {"dem.dt", "above the stability limit", "allowed (0,"}},
-        {"unknown_material", replace(kGood, "materials = [\"g\", \"g\"]", "materials = [\"g\", \"gg\"]"), "", {"unknown material 'gg'"}},
-        {"missing_law_parameter", replace(kGood, "kn = 1e4", "kt = 1e4"), "", {"missing required parameter 'kn'", "kt"}},
-        {"unknown_law", replace(kGood, "kn = 1e4", "kn = 1e4\nnormal = \"hook\""), "", {"unknown normal law 'hook'", "did you mean 'hooke'"}},
-        {"bad_range", replace(kGood, "kn = 1e4", "kn = 1e4\ndamping = \"restitution\"\ne = 1.5"), "", {"e = 1.5 is out of range", "[0, 1]"}},
+        {"unstable_dt",
+         replace(kGood, "dt = 1e-5", "dt = 1e-3"),
+         "",
+         {"dem.dt", "above the stability limit", "allowed (0,"}},
+        {"unknown_material",
+         replace(kGood, "materials = [\"g\", \"g\"]", "materials = [\"g\", \"gg\"]"),
+         "",
+         {"unknown material 'gg'"}},
+        {"missing_law_parameter",
+         replace(kGood, "kn = 1e4", "kt = 1e4"),
+         "",
+         {"missing required parameter 'kn'", "kt"}},
+        {"unknown_law",
+         replace(kGood, "kn = 1e4", "kn = 1e4\nnormal = \"hook\""),
+         "",
+         {"unknown normal law 'hook'", "did you mean 'hooke'"}},
+        {"bad_range",
+         replace(kGood, "kn = 1e4", "kn = 1e4\ndamping = \"restitution\"\ne = 1.5"),
+         "",
+         {"e = 1.5 is out of range", "[0, 1]"}},
         {"bad_set", kGood, "--set dem.dt", {"expected key=value"}},
-        {"set_unknown_key", kGood, "--set dem.tdt=1", {"--set", "dem.tdt", "unknown key", "did you mean 'dt'"}},
+        {"set_unknown_key",
+         kGood,
+         "--set dem.tdt=1",
+         {"--set", "dem.tdt", "unknown key", "did you mean 'dt'"}},
         {"no_checkpoint", kGood, "--resume nowhere", {"nowhere", "no checkpoint"}},
-        {"zero_spacing", kGood + std::string("[[block]]\nregion = [1.0, 1.0, 2.0, 2.0]\nradius = 0.01\nmaterial = \"g\"\n"), "",
+        {"zero_spacing",
+         kGood + std::string("[[block]]\nregion = [1.0, 1.0, 2.0, 2.0]\nradius = 0.01\nmaterial = \"g\"\n"),
+         "",
          {"block[0].spacing", "must be > 0"}},
         {"unreachable_restitution",
-         replace(replace(kGood, "kn = 1e4", "normal = \"hertz\"\ndamping = \"restitution\"\ne = 0.02\nclip_attraction = true"),
+         replace(replace(kGood, "kn = 1e4",
+                         "normal = \"hertz\"\ndamping = \"restitution\"\ne = 0.02\nclip_attraction = true"),
                  "density = 1.0", "density = 1.0\nyoungs_modulus = 1e9\npoisson = 0.3"),
-         "", {"contact[0].e", "below the smallest restitution", "clipped"}},
-        {"hertz_without_modulus", replace(kGood, "kn = 1e4", "normal = \"hertz\""), "", {"youngs_modulus", "material 'g'"}},
+         "",
+         {"contact[0].e", "below the smallest restitution", "clipped"}},
+        {"hertz_without_modulus",
+         replace(kGood, "kn = 1e4", "normal = \"hertz\""),
+         "",
+         {"youngs_modulus", "material 'g'"}},
         {"missing_dt", replace(kGood, "dt = 1e-5\n", ""), "", {"dem.dt", "missing"}},
-        {"wildcard_material", replace(kGood, "name = \"g\"", "name = \"*\""), "", {"material[0].name", "wildcard"}},
-        {"bool_for_number", replace(kGood, "kn = 1e4", "kn = true"), "", {"contact[0].kn", "expects a number"}},
-        {"particle_in_wall", kGood + std::string("[[wall]]\npoints = [[0.005, -1.0], [0.005, 1.0]]\nmaterial = \"g\"\n"), "",
+        {"wildcard_material",
+         replace(kGood, "name = \"g\"", "name = \"*\""),
+         "",
+         {"material[0].name", "wildcard"}},
+        {"bool_for_number",
+         replace(kGood, "kn = 1e4", "kn = true"),
+         "",
+         {"contact[0].kn", "expects a number"}},
+        {"particle_in_wall",
+         kGood + std::string("[[wall]]\npoints = [[0.005, -1.0], [0.005, 1.0]]\nmaterial = \"g\"\n"),
+         "",
          {"overlaps wall[0]", "bad.toml:11", "wall is defined at bad.toml:19"}},
         // Polygon shapes (appended from line 19; the hexagon's inradius is 0.00866 m).
         {"nonconvex_polygon",
-         kGood + std::string("[[shape]]\nname = \"bad\"\nkind = \"polygon\"\ncorners = [[0.0, 0.0], [0.01, 0.0], [0.002, 0.002], [0.0, 0.01]]\n"),
-         "", {"bad.toml:19", "shape[0].corners", "not convex at corner 2"}},
-        {"polygon_radius", kGood + kHex + "[[particle]]\nshape = \"hex\"\nposition = [0.1, 0.0]\nradius = 0.01\nmaterial = \"g\"\n", "",
-         {"bad.toml:27", "particle[2].radius", "radius belongs to disks; the size of shape 'hex' comes from its [[shape]]"}},
+         kGood + std::string("[[shape]]\nname = \"bad\"\nkind = \"polygon\"\ncorners = [[0.0, 0.0], [0.01, "
+                             "0.0], [0.002, 0.002], [0.0, 0.01]]\n"),
+         "",
+         {"bad.toml:19", "shape[0].corners", "not convex at corner 2"}},
+        {"polygon_radius",
+         kGood + kHex +
+             "[[particle]]\nshape = \"hex\"\nposition = [0.1, 0.0]\nradius = 0.01\nmaterial = \"g\"\n",
+         "",
+         {"bad.toml:27", "particle[2].radius",
+          "radius belongs to disks; the size of shape 'hex' comes from its [[shape]]"}},
         {"polygon_overlap",
          kGood + kHex + "[[particle]]\nshape = \"hex\"\nposition = [0.1, 0.0]\nmaterial = \"g\"\n" +
              "[[particle]]\nshape = \"hex\"\nposition = [0.1, 0.015]\nmaterial = \"g\"\n",
-         "", {"bad.toml:24", "polygon particles 2 and 3 overlap at start", "defined at bad.toml:28"}},
+         "",
+         {"bad.toml:24", "polygon particles 2 and 3 overlap at start", "defined at bad.toml:28"}},
     };
     for (const auto& c : cases) {
         SCOPED_TRACE(c.name);
         std::string file = "bad.toml";
-        if (c.scene.empty()) file = "missing.toml";
-        else test::writeText(dir / file, c.scene);
-        const auto r = test::runGranulab(fmt::format("run {} --quiet --out out_{} {}", file, c.name, c.extraArgs), dir);
+        if (c.scene.empty())
+            file = "missing.toml";
+        else
+            test::writeText(dir / file, c.scene);
+        const auto r =
+            test::runGranulab(fmt::format("run {} --quiet --out out_{} {}", file, c.name, c.extraArgs), dir);
         EXPECT_EQ(r.status, 2) << r.output;
-        for (const auto& e : c.expect) EXPECT_NE(r.output.find(e), std::string::npos) << "missing '" << e << "' in:\n" << r.output;
+        for (const auto& e : c.expect)
+            EXPECT_NE(r.output.find(e), std::string::npos) << "missing '" << e << "' in:\n" << r.output;
     }
 }
 
@@ -112,7 +162,8 @@ TEST(Cli, ResumeContinuesBitForBitAndRunsAreDeterministic) {
     run("--out again");
     run("--out split --set run.end_time=0.0137");
     run("--resume split");
-    const auto other = test::runGranulab("run '" + scene + "'" + common + " --resume full --set dem.integrator=gear", dir);
+    const auto other =
+        test::runGranulab("run '" + scene + "'" + common + " --resume full --set dem.integrator=gear", dir);
     EXPECT_EQ(other.status, 2) << other.output;  // a checkpoint holds the state of its own integrator
     EXPECT_NE(other.output.find("integrator 'verlet'"), std::string::npos) << other.output;
     const std::string full = test::readText(dir / "full/final.csv");
@@ -138,7 +189,8 @@ TEST(Cli, InfoHelpVersion) {
     EXPECT_NE(r.output.find("cundall_strack"), std::string::npos);
     r = test::runGranulab("help restitution", dir);
     EXPECT_EQ(r.status, 0);
-    EXPECT_NE(r.output.find("0.30     0.3723    0.4168    0.4849"), std::string::npos) << r.output;  // spec table
+    EXPECT_NE(r.output.find("0.30     0.3723    0.4168    0.4849"), std::string::npos)
+        << r.output;  // spec table
     r = test::runGranulab("help nonsense", dir);
     EXPECT_EQ(r.status, 2);
     r = test::runGranulab("--version", dir);
@@ -155,7 +207,8 @@ TEST(Cli, UnstableRunStopsWithDiagnosisAndKeepsCheckpoint) {
     // spring is far too soft for that speed), which the engine must diagnose and stop.
     std::string scene = kGood;
     scene = replace(scene, "end_time = 0.01", "end_time = 0.002");
-    scene = replace(scene, "radius = 0.01\nmaterial = \"g\"\n[[particle]]", "radius = 0.01\nvelocity = [50.0, 0.0]\nmaterial = \"g\"\n[[particle]]");
+    scene = replace(scene, "radius = 0.01\nmaterial = \"g\"\n[[particle]]",
+                    "radius = 0.01\nvelocity = [50.0, 0.0]\nmaterial = \"g\"\n[[particle]]");
     scene += R"(velocity = [-50.0, 0.0]
 [output]
 checkpoint_interval = 0.0001
@@ -172,7 +225,8 @@ checkpoint_interval = 0.0001
 TEST(Cli, EveryBundledExampleValidates) {
     const test::ScratchDir scratch;
     int seen = 0;
-    for (const auto& entry : std::filesystem::recursive_directory_iterator(std::string(GRANULAB_SOURCE_DIR) + "/examples")) {
+    for (const auto& entry :
+         std::filesystem::recursive_directory_iterator(std::string(GRANULAB_SOURCE_DIR) + "/examples")) {
         if (entry.path().extension() != ".toml") continue;
         ++seen;
         const auto r = test::runGranulab("info '" + entry.path().string() + "'", scratch.path);
@@ -209,9 +263,11 @@ TEST(Cli, OldCheckpointFormatsAreRefusedNamingTheirVersion) {
         EXPECT_NE(r.output.find("without --resume"), std::string::npos) << r.output;
     }
     // A checkpoint of the other engine is refused too.
-    test::writeText(dir / "gas.toml", "[run]\nengine = \"edmd\"\ndimension = 2\nend_time = 0.5\n[edmd]\ncount = 100\n"
-                                       "volume_fraction = 0.2\nradius = 1.0\nequilibrate = 0\n[output]\nvtk = false\n");
-    ASSERT_EQ(test::runGranulab("run gas.toml --quiet --out gas --set edmd.analysis_files=false", dir).status, 0);
+    test::writeText(dir / "gas.toml",
+                    "[run]\nengine = \"edmd\"\ndimension = 2\nend_time = 0.5\n[edmd]\ncount = 100\n"
+                    "volume_fraction = 0.2\nradius = 1.0\nequilibrate = 0\n[output]\nvtk = false\n");
+    ASSERT_EQ(test::runGranulab("run gas.toml --quiet --out gas --set edmd.analysis_files=false", dir).status,
+              0);
     const auto r = test::runGranulab(fmt::format("run '{}' --quiet --resume gas", scene), dir);
     EXPECT_EQ(r.status, 2) << r.output;
     EXPECT_NE(r.output.find("written by the edmd engine"), std::string::npos) << r.output;

@@ -44,8 +44,8 @@ TEST(EdmdCli, RunWritesTheContractOutputs) {
     const auto r = test::runGranulab("run gas.toml --out out -q", scratch.path);
     ASSERT_EQ(r.status, 0) << r.output;
     const auto js = nlohmann::json::parse(test::readText(scratch.path / "out/summary.json"));
-    for (const char* key : {"engine", "particles", "sim_time", "wall_time_s", "events", "collisions", "events_per_s",
-                            "collisions_per_s", "bytes_per_particle", "theory"})
+    for (const char* key : {"engine", "particles", "sim_time", "wall_time_s", "events", "collisions",
+                            "events_per_s", "collisions_per_s", "bytes_per_particle", "theory"})
         EXPECT_TRUE(js.contains(key)) << key;
     EXPECT_EQ(js["engine"], "edmd");
     EXPECT_EQ(js["particles"], 400);
@@ -53,13 +53,17 @@ TEST(EdmdCli, RunWritesTheContractOutputs) {
     EXPECT_GT(js["collisions"].get<double>(), 500);  // ~1.2 per particle and s at nu = 0.3
     const std::string series = test::readText(scratch.path / "out/series.csv");
     EXPECT_EQ(series.rfind("time,tau,events,collisions", 0), 0u);
-    for (const char* column : {"temperature_haff", "collision_frequency", "reduced_pressure", "kurtosis", "q_x", "nu_q50"})
+    for (const char* column :
+         {"temperature_haff", "collision_frequency", "reduced_pressure", "kurtosis", "q_x", "nu_q50"})
         EXPECT_NE(series.find(column), std::string::npos) << column;
     EXPECT_EQ(std::count(series.begin(), series.end(), '\n'), 1 + 1 + 8);  // header, t = 0, 8 rows
-    for (const char* file : {"final.csv", "theory.csv", "snapshots.pvd", "checkpoint.bin", "analysis/gr_000000.csv",
-                             "analysis/clusters_000004.csv", "analysis/velocity_000001.csv", "analysis/density_000002.csv"})
+    for (const char* file :
+         {"final.csv", "theory.csv", "snapshots.pvd", "checkpoint.bin", "analysis/gr_000000.csv",
+          "analysis/clusters_000004.csv", "analysis/velocity_000001.csv", "analysis/density_000002.csv"})
         EXPECT_TRUE(std::filesystem::exists(scratch.path / "out" / file)) << file;
-    EXPECT_EQ(test::readText(scratch.path / "out/final.csv").rfind("id,shape,x,y,vx,vy,omega,radius,mass,collisions\n", 0), 0u);
+    EXPECT_EQ(test::readText(scratch.path / "out/final.csv")
+                  .rfind("id,shape,x,y,vx,vy,omega,radius,mass,collisions\n", 0),
+              0u);
     // The gas snapshots render like DEM ones (smooth spheres carry no angle array).
     const auto render = test::runGranulab("render out --png -q", scratch.path);
     EXPECT_EQ(render.status, 0) << render.output;
@@ -71,13 +75,20 @@ TEST(EdmdCli, ResumeIsBitForBitAndRunsAreDeterministic) {
     test::writeText(scratch.path / "gas.toml", kGas);
     ASSERT_EQ(test::runGranulab("run gas.toml --out full -q", scratch.path).status, 0);
     ASSERT_EQ(test::runGranulab("run gas.toml --out again -q", scratch.path).status, 0);
-    EXPECT_EQ(test::readText(scratch.path / "full/final.csv"), test::readText(scratch.path / "again/final.csv"));
+    EXPECT_EQ(test::readText(scratch.path / "full/final.csv"),
+              test::readText(scratch.path / "again/final.csv"));
     // Half the run, then resume to the end: same particles and the same series rows.
-    ASSERT_EQ(test::runGranulab("run gas.toml --out part -q --set run.end_time=2.0 --set edmd.series_points=4", scratch.path).status, 0);
+    ASSERT_EQ(
+        test::runGranulab("run gas.toml --out part -q --set run.end_time=2.0 --set edmd.series_points=4",
+                          scratch.path)
+            .status,
+        0);
     const auto r = test::runGranulab("run gas.toml --resume part -q", scratch.path);
     ASSERT_EQ(r.status, 0) << r.output;
-    EXPECT_EQ(test::readText(scratch.path / "full/final.csv"), test::readText(scratch.path / "part/final.csv"));
-    EXPECT_EQ(test::readText(scratch.path / "full/series.csv"), test::readText(scratch.path / "part/series.csv"));
+    EXPECT_EQ(test::readText(scratch.path / "full/final.csv"),
+              test::readText(scratch.path / "part/final.csv"));
+    EXPECT_EQ(test::readText(scratch.path / "full/series.csv"),
+              test::readText(scratch.path / "part/series.csv"));
 }
 
 TEST(EdmdCli, BadInputNamesTheKeyAndExitsWithTwo) {
@@ -88,24 +99,44 @@ TEST(EdmdCli, BadInputNamesTheKeyAndExitsWithTwo) {
         std::vector<std::string> expect;
     };
     const Case cases[] = {
-        {"negative_radius", replaceOnce(kGas, "radius = 1.0", "radius = -1.0"), {"edmd.radius", "must be > 0", "(0, inf)"}},
-        {"unknown_key", replaceOnce(kGas, "restitution = 0.9", "restitutoin = 0.9"), {"bad.toml:11", "edmd.restitutoin", "did you mean"}},
-        {"restitution_range", replaceOnce(kGas, "restitution = 0.9", "restitution = 1.5"), {"edmd.restitution", "[0, 1]"}},
-        {"three_of_three", replaceOnce(kGas, "count = 400", "count = 400\nbox = [100.0, 100.0]"), {"exactly two of box, count"}},
+        {"negative_radius",
+         replaceOnce(kGas, "radius = 1.0", "radius = -1.0"),
+         {"edmd.radius", "must be > 0", "(0, inf)"}},
+        {"unknown_key",
+         replaceOnce(kGas, "restitution = 0.9", "restitutoin = 0.9"),
+         {"bad.toml:11", "edmd.restitutoin", "did you mean"}},
+        {"restitution_range",
+         replaceOnce(kGas, "restitution = 0.9", "restitution = 1.5"),
+         {"edmd.restitution", "[0, 1]"}},
+        {"three_of_three",
+         replaceOnce(kGas, "count = 400", "count = 400\nbox = [100.0, 100.0]"),
+         {"exactly two of box, count"}},
         {"no_end", replaceOnce(kGas, "end_time = 4.0", ""), {"run.end_time", "exactly one run length"}},
-        {"dem_section", std::string(kGas) + "[dem]\ndt = 1e-5\n", {"bad.toml:", "[dem] belongs to the dem engine"}},
-        {"too_dense_lattice", replaceOnce(kGas, "volume_fraction = 0.3", "volume_fraction = 0.85"), {"edmd.volume_fraction", "cannot place"}},
-        {"small_box", replaceOnce(replaceOnce(kGas, "count = 400", "box = [5.0, 5.0]"), "volume_fraction = 0.3", "volume_fraction = 0.1"),
+        {"dem_section",
+         std::string(kGas) + "[dem]\ndt = 1e-5\n",
+         {"bad.toml:", "[dem] belongs to the dem engine"}},
+        {"too_dense_lattice",
+         replaceOnce(kGas, "volume_fraction = 0.3", "volume_fraction = 0.85"),
+         {"edmd.volume_fraction", "cannot place"}},
+        {"small_box",
+         replaceOnce(replaceOnce(kGas, "count = 400", "box = [5.0, 5.0]"), "volume_fraction = 0.3",
+                     "volume_fraction = 0.1"),
          {"edmd.box", "must hold 3 diameters"}},
-        {"dimension", replaceOnce(kGas, "dimension = 2", "dimension = 4"), {"run.dimension", "disks (2) or spheres (3)"}},
-        {"end_tau_elastic", replaceOnce(replaceOnce(kGas, "end_time = 4.0", ""), "restitution = 0.9", "restitution = 1.0\nend_tau = 2.0"),
+        {"dimension",
+         replaceOnce(kGas, "dimension = 2", "dimension = 4"),
+         {"run.dimension", "disks (2) or spheres (3)"}},
+        {"end_tau_elastic",
+         replaceOnce(replaceOnce(kGas, "end_time = 4.0", ""), "restitution = 0.9",
+                     "restitution = 1.0\nend_tau = 2.0"),
          {"edmd.end_tau", "restitution below 1"}},
     };
     for (const auto& c : cases) {
         test::writeText(scratch.path / "bad.toml", c.scene);
         const auto r = test::runGranulab("run bad.toml --out out -q", scratch.path);
         EXPECT_EQ(r.status, 2) << c.name << ": " << r.output;
-        for (const auto& s : c.expect) EXPECT_NE(r.output.find(s), std::string::npos) << c.name << ": missing '" << s << "' in\n" << r.output;
+        for (const auto& s : c.expect)
+            EXPECT_NE(r.output.find(s), std::string::npos) << c.name << ": missing '" << s << "' in\n"
+                                                           << r.output;
     }
 }
 
@@ -124,7 +155,8 @@ TEST(EdmdCli, AnalyzeMeasuresTheFinalStateAndMasterEquationWritesItsCurves) {
     EXPECT_LT(js["g_contact"].get<double>(), 2.6);
     EXPECT_NEAR(js["M1"].get<double>() * js["clusters"].get<double>(), 400, 1e-9);  // M1 = N / n_tot
     EXPECT_EQ(test::runGranulab("analyze missing_folder", scratch.path).status, 2);
-    const auto m = test::runGranulab("master-equation --lambda 4 --xi 2 --smax 50 --t-end 20 --points 5 --out me", scratch.path);
+    const auto m = test::runGranulab(
+        "master-equation --lambda 4 --xi 2 --smax 50 --t-end 20 --points 5 --out me", scratch.path);
     ASSERT_EQ(m.status, 0) << m.output;
     const std::string moments = test::readText(scratch.path / "me_moments.csv");
     EXPECT_EQ(moments.rfind("t,M1,M2,total,mass\n", 0), 0u);

@@ -2,6 +2,10 @@
 // `granulab render`: a 3-disk scene with a floor, rendered and inspected pixel by pixel
 // (existence, width, disk colours, white background, y axis pointing up); a polygon scene
 // (filled true outlines in the speed colour).
+#include <cairo.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
@@ -9,12 +13,8 @@
 #include <string>
 #include <vector>
 
-#include <cairo.h>
-#include <gtest/gtest.h>
-#include <unistd.h>
-
-#include "app/render.hpp"
 #include "../support.hpp"
+#include "app/render.hpp"
 #include "io/vtk_writer.hpp"
 
 namespace granulab::app {
@@ -50,7 +50,9 @@ private:
     cairo_surface_t* m_s;
 };
 
-bool isWhite(Rgb8 c) { return c.r == 255 && c.g == 255 && c.b == 255; }
+bool isWhite(Rgb8 c) {
+    return c.r == 255 && c.g == 255 && c.b == 255;
+}
 bool near(Rgb8 c, Rgb8 want, int tol = 12) {
     return std::abs(c.r - want.r) <= tol && std::abs(c.g - want.g) <= tol && std::abs(c.b - want.b) <= tol;
 }
@@ -91,7 +93,7 @@ TEST(Render, DrawsDisksWithYUp) {
     const Rgb8 fast = png.at(L.toPixel({0.5, 0.2 + 0.5 * kR}));
     const Rgb8 mid = png.at(L.toPixel({0.35, 0.9 + 0.5 * kR}));
     EXPECT_FALSE(isWhite(png.at(L.toPixel({0.2, 0.2}))));
-    EXPECT_TRUE(near(slow, {68, 1, 84})) << slow.r << "," << slow.g << "," << slow.b;    // viridis(0)
+    EXPECT_TRUE(near(slow, {68, 1, 84})) << slow.r << "," << slow.g << "," << slow.b;     // viridis(0)
     EXPECT_TRUE(near(fast, {253, 231, 37})) << fast.r << "," << fast.g << "," << fast.b;  // viridis(1)
     EXPECT_TRUE(near(mid, {33, 145, 140}, 20)) << mid.r << "," << mid.g << "," << mid.b;  // viridis(.5)
     EXPECT_TRUE(isWhite(png.at(L.toPixel({0.9, 0.7}))));
@@ -190,8 +192,8 @@ TEST(Render, DrawsPolygonsAsFilledOutlines) {
     const Rgb8 rest = png.at(L.toPixel({f.x[0], f.y[0]}));
     const Rgb8 fast = png.at(L.toPixel({f.x[1], f.y[1]}));
     const Rgb8 half = png.at(L.toPixel({f.x[2], f.y[2]}));
-    EXPECT_TRUE(near(rest, {68, 1, 84})) << rest.r << "," << rest.g << "," << rest.b;     // viridis(0)
-    EXPECT_TRUE(near(fast, {253, 231, 37})) << fast.r << "," << fast.g << "," << fast.b;  // viridis(1)
+    EXPECT_TRUE(near(rest, {68, 1, 84})) << rest.r << "," << rest.g << "," << rest.b;         // viridis(0)
+    EXPECT_TRUE(near(fast, {253, 231, 37})) << fast.r << "," << fast.g << "," << fast.b;      // viridis(1)
     EXPECT_TRUE(near(half, {33, 145, 140}, 20)) << half.r << "," << half.g << "," << half.b;  // viridis(.5)
 
     for (std::size_t p = 0; p < f.size(); ++p) {
@@ -202,7 +204,8 @@ TEST(Render, DrawsPolygonsAsFilledOutlines) {
         // not the bounding circle).
         for (std::size_t k = 0; k < c.size(); ++k) {
             const Vec2 mid = (c[k] + c[(k + 1) % c.size()]) * 0.5;
-            const Vec2 out = centre + (mid - centre) * (1.0 + 0.35 * (f.radius[p] / norm(mid - centre) - 1.0));
+            const Vec2 out =
+                centre + (mid - centre) * (1.0 + 0.35 * (f.radius[p] / norm(mid - centre) - 1.0));
             ASSERT_LT(norm(out - centre), f.radius[p]);
             EXPECT_TRUE(isWhite(png.at(L.toPixel(out)))) << "polygon " << p << " edge " << k;
         }

@@ -26,7 +26,9 @@ TEST(BroadPhase, CellGridMatchesBruteForceOnPolydisperseScenes) {
         std::size_t n;
         Real rmin, rmax, box, margin;
     };
-    const Case cases[] = {{500, 0.5, 0.5, 30, 0.1}, {800, 0.05, 1.0, 40, 0.05}, {300, 0.1, 2.0, 20, 0.0},
+    const Case cases[] = {{500, 0.5, 0.5, 30, 0.1},
+                          {800, 0.05, 1.0, 40, 0.05},
+                          {300, 0.1, 2.0, 20, 0.0},
                           {1000, 0.2, 0.3, 15, 0.2}};
     std::uint64_t seed = 1;
     for (const auto& c : cases) {

@@ -2,11 +2,11 @@
 // Validation: head-on disk-disk and disk-wall collisions against the closed form of the
 // damped linear spring (docs/physics/contact-laws.md): restitution and contact time, relative
 // error < 1e-3 at 50 steps per contact, for every damping convention.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
-#include <fmt/format.h>
 #include <map>
 #include <string>
 
@@ -46,8 +46,10 @@ Measured collide(const Damping& damping, bool wall, Real dt) {
     params["kn"] = 1.0e4;
     test::DemSceneBuilder b(dt, 1.0);
     b.material("a", 1.0).contact("*", "*", "hooke", damping.name, params);
-    if (wall) b.disk({0.6, 0.0}, {-1.0, 0.0}, 0.5, "a").wall({{0.0, -2.0}, {0.0, 2.0}}, "a");
-    else b.disk({-0.6, 0.0}, {1.0, 0.0}, 0.5, "a").disk({0.6, 0.0}, {-1.0, 0.0}, 0.5, "a");
+    if (wall)
+        b.disk({0.6, 0.0}, {-1.0, 0.0}, 0.5, "a").wall({{0.0, -2.0}, {0.0, 2.0}}, "a");
+    else
+        b.disk({-0.6, 0.0}, {1.0, 0.0}, 0.5, "a").disk({0.6, 0.0}, {-1.0, 0.0}, 0.5, "a");
     dem::World w = b.world();
     const auto& s = w.store();
     auto slotOf = [&](ParticleId id) {
@@ -90,7 +92,7 @@ class LinearCollision : public ::testing::TestWithParam<bool> {};
 
 TEST_P(LinearCollision, RestitutionAndContactTimeMatchClosedForm) {
     const bool wall = GetParam();
-    const Real m = kPi * 0.25;            // density 1, r = 0.5
+    const Real m = kPi * 0.25;             // density 1, r = 0.5
     const Real meff = wall ? m : 0.5 * m;  // wall: infinite mass
     const Real kn = 1.0e4;
     const Real e = 0.7;
@@ -105,17 +107,20 @@ TEST_P(LinearCollision, RestitutionAndContactTimeMatchClosedForm) {
         const Closed ref = closedForm(meff, kn, c.c);
         const Measured got = collide(c, wall, ref.tc / 50);
         SCOPED_TRACE(c.name);
-        std::printf("%s %-34s e %.6f (closed %.6f, rel %.1e)  tc %.6g (closed %.6g, rel %.1e)\n", wall ? "wall" : "pair",
-                    c.name.c_str(), got.e, ref.e, std::abs(got.e - ref.e) / ref.e, got.tc, ref.tc,
-                    std::abs(got.tc - ref.tc) / ref.tc);
+        std::printf("%s %-34s e %.6f (closed %.6f, rel %.1e)  tc %.6g (closed %.6g, rel %.1e)\n",
+                    wall ? "wall" : "pair", c.name.c_str(), got.e, ref.e, std::abs(got.e - ref.e) / ref.e,
+                    got.tc, ref.tc, std::abs(got.tc - ref.tc) / ref.tc);
         EXPECT_LT(std::abs(got.e - ref.e) / ref.e, 1e-3) << "e measured " << got.e << " expected " << ref.e;
-        EXPECT_LT(std::abs(got.tc - ref.tc) / ref.tc, 1e-3) << "tc measured " << got.tc << " expected " << ref.tc;
+        EXPECT_LT(std::abs(got.tc - ref.tc) / ref.tc, 1e-3)
+            << "tc measured " << got.tc << " expected " << ref.tc;
     }
     // The restitution convention reproduces the requested e exactly (up to discretisation).
-    const Measured got =
-        collide({"restitution", {{"e", 0.7}}, 0.0}, wall, closedForm(meff, kn, 2 * beta * std::sqrt(meff * kn)).tc / 50);
+    const Measured got = collide({"restitution", {{"e", 0.7}}, 0.0}, wall,
+                                 closedForm(meff, kn, 2 * beta * std::sqrt(meff * kn)).tc / 50);
     EXPECT_NEAR(got.e, 0.7, 0.7e-3);
 }
 
 INSTANTIATE_TEST_SUITE_P(DiskDiskAndDiskWall, LinearCollision, ::testing::Values(false, true),
-                         [](const auto& info) { return info.param ? std::string("DiskWall") : std::string("DiskDisk"); });
+                         [](const auto& info) {
+                             return info.param ? std::string("DiskWall") : std::string("DiskDisk");
+                         });

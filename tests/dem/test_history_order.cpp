@@ -58,7 +58,8 @@ material = "g"
     };
     for (ParticleId id : {0u, 1u})
         for (int what = 0; what < 3; ++what)
-            EXPECT_NEAR(byId(sorted, id, what), byId(unsorted, id, what), 1e-9) << "id " << id << " field " << what;
+            EXPECT_NEAR(byId(sorted, id, what), byId(unsorted, id, what), 1e-9)
+                << "id " << id << " field " << what;
 }
 
 TEST(ContactHistory, SlotPermutationKeepsTheSpringAndTheForces) {

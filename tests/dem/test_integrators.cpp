@@ -1,15 +1,15 @@
 // SPDX-License-Identifier: MIT
 // Integrators: the error of a damped contact's restitution falls with the time step at each
 // scheme's order; every integrator resumes bit for bit from a saved state.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
-#include <fmt/format.h>
 #include <sstream>
 
-#include "app/dem/dem_engine.hpp"
 #include "../support.hpp"
+#include "app/dem/dem_engine.hpp"
 
 using namespace granulab;
 

@@ -2,12 +2,12 @@
 // Validation of polygon collisions with the gc2d overlap-area law (gc2d spec section 8.2, items
 // 3-5): elastic scattering of two 64-gons against the hard-disk angle 2 arcsin(b/r) (erratum 14),
 // the ring collapse of N 64-gons, and the restitution of a 64-gon on a wall as a function of gamma.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fmt/format.h>
 
 #include "../support.hpp"
 #include "geom/polygon.hpp"
@@ -68,13 +68,13 @@ material = "grain"
 // Binary elastic collision (spec 8.2 item 3)
 
 struct Scattering {
-    Real chi0 = 0, chi1 = 0;       ///< [rad] lab deflection of particles 0 and 1
-    Real energyRel = 0;            ///< (E_after - E_before) / E_before, kinetic + rotational
-    Real momentumRel = 0;          ///< |P_after - P_before| / (m u)
-    Real omega0 = 0, omega1 = 0;   ///< [rad/s] after the collision
-    Real hMax = 0;                 ///< [m] largest r - |x1 - x0| during the contact
-    int contactSteps = 0;          ///< steps with a contact
-    Real mass = 0;                 ///< [kg] of one body
+    Real chi0 = 0, chi1 = 0;      ///< [rad] lab deflection of particles 0 and 1
+    Real energyRel = 0;           ///< (E_after - E_before) / E_before, kinetic + rotational
+    Real momentumRel = 0;         ///< |P_after - P_before| / (m u)
+    Real omega0 = 0, omega1 = 0;  ///< [rad/s] after the collision
+    Real hMax = 0;                ///< [m] largest r - |x1 - x0| during the contact
+    int contactSteps = 0;         ///< steps with a contact
+    Real mass = 0;                ///< [kg] of one body
 };
 
 constexpr Real kR = 0.001, kU = 0.5;  // circumradius [m], speed of each body [m/s]
@@ -94,9 +94,10 @@ Scattering scatter(Real bOverR, Real dt, Real E, bool disks = false) {
     if (disks) {
         for (int k = 0; k < 2; ++k) {
             const Real sg = k == 0 ? -1 : 1;
-            toml += fmt::format("[[particle]]\nposition = [{:.17g}, {:.17g}]\nvelocity = [{:.17g}, 0.0]\nradius = {:.17g}\n"
-                                "material = \"grain\"\n",
-                                sg * o.x, -sg * o.y, -sg * kU, kR);
+            toml += fmt::format(
+                "[[particle]]\nposition = [{:.17g}, {:.17g}]\nvelocity = [{:.17g}, 0.0]\nradius = {:.17g}\n"
+                "material = \"grain\"\n",
+                sg * o.x, -sg * o.y, -sg * kU, kR);
         }
     } else {
         toml += particle({-o.x, o.y}, {kU, 0});
@@ -127,7 +128,8 @@ Scattering scatter(Real bOverR, Real dt, Real E, bool disks = false) {
             touched = true;
             ++out.contactSteps;
         } else if (touched && d > r) {
-            break;  // the circumcircles are apart: free flight from here on (facets may lose contact briefly before)
+            break;  // the circumcircles are apart: free flight from here on (facets may lose contact briefly
+                    // before)
         }
     }
     EXPECT_TRUE(touched) << "b/r = " << bOverR;
@@ -166,7 +168,8 @@ Scattering referenceScatter(Real bOverR, Real dt, Real E) {
     };
     const auto accel = [&](const State& st, Real a[6]) {
         for (int k = 0; k < 6; ++k) a[k] = 0;
-        const geom::PolygonOverlap ov = geom::convexOverlap(place(st.q[0], st.q[1], st.q[2]), place(st.q[3], st.q[4], st.q[5]));
+        const geom::PolygonOverlap ov =
+            geom::convexOverlap(place(st.q[0], st.q[1], st.q[2]), place(st.q[3], st.q[4], st.q[5]));
         if (!ov.overlapping || !(ov.area > 0)) return false;
         const Vec2 ri = ov.point - Vec2{st.q[0], st.q[1]}, rj = ov.point - Vec2{st.q[3], st.q[4]};
         const Real l = norm(ri) * norm(rj) / (norm(ri) + norm(rj));
@@ -191,9 +194,11 @@ Scattering referenceScatter(Real bOverR, Real dt, Real E) {
         State s2, s3, s4;
         Real a1[6], a2[6], a3[6], a4[6];
         const bool contact = accel(st, a1);
-        for (int c = 0; c < 6; ++c) s2.q[c] = st.q[c] + 0.5 * dt * st.v[c], s2.v[c] = st.v[c] + 0.5 * dt * a1[c];
+        for (int c = 0; c < 6; ++c)
+            s2.q[c] = st.q[c] + 0.5 * dt * st.v[c], s2.v[c] = st.v[c] + 0.5 * dt * a1[c];
         accel(s2, a2);
-        for (int c = 0; c < 6; ++c) s3.q[c] = st.q[c] + 0.5 * dt * s2.v[c], s3.v[c] = st.v[c] + 0.5 * dt * a2[c];
+        for (int c = 0; c < 6; ++c)
+            s3.q[c] = st.q[c] + 0.5 * dt * s2.v[c], s3.v[c] = st.v[c] + 0.5 * dt * a2[c];
         accel(s3, a3);
         for (int c = 0; c < 6; ++c) s4.q[c] = st.q[c] + dt * s3.v[c], s4.v[c] = st.v[c] + dt * a3[c];
         accel(s4, a4);
@@ -203,8 +208,10 @@ Scattering referenceScatter(Real bOverR, Real dt, Real E) {
         }
         const Real d = std::hypot(st.q[3] - st.q[0], st.q[4] - st.q[1]);
         out.hMax = std::max(out.hMax, r - d);
-        if (contact) touched = true;
-        else if (touched && d > r) break;
+        if (contact)
+            touched = true;
+        else if (touched && d > r)
+            break;
     }
     out.chi0 = std::atan2(st.v[1], st.v[0]);
     out.chi1 = std::atan2(-st.v[4], -st.v[3]);
@@ -234,8 +241,10 @@ Real softDiskTheta(Real bOverR, Real E, Real m, Real dt) {
         const Vec2 v4 = v + a3 * dt, a4 = accel(q + v3 * dt);
         q += (v + v2 * 2 + v3 * 2 + v4) * (dt / 6);
         v += (a1 + a2 * 2 + a3 * 2 + a4) * (dt / 6);
-        if (norm(q) < r) touched = true;
-        else if (touched) break;
+        if (norm(q) < r)
+            touched = true;
+        else if (touched)
+            break;
     }
     return kPi - std::abs(std::atan2(v.y, v.x));
 }
@@ -268,19 +277,24 @@ TEST(PolygonCollision, ScatteringAngle) {
         //  - size: the 64-gons touch at a centre distance between r cos(pi/64) (inscribed circles)
         //    and r, and 2 arcsin(b/r_c) moves with r_c.
         const Real thetaSoft = softDiskTheta(bor, E, disk.mass, dt / 10);
-        const Real tol = std::abs(thetaSoft - thetaRef) + 2 * facet +
-                         (2 * std::asin(bor / std::cos(facet)) - thetaRef);
+        const Real tol =
+            std::abs(thetaSoft - thetaRef) + 2 * facet + (2 * std::asin(bor / std::cos(facet)) - thetaRef);
         const Real err0 = theta0 - thetaRef, err1 = theta1 - thetaRef, errDisk = thetaDisk - thetaSoft;
         const Real errRef = theta0 - (kPi - std::abs(ref.chi0));
-        std::printf("b/r %.2f  theta %8.4f deg (2 asin(b/r) %8.4f): err %+7.4f deg (tol %.3f), particle 1 %+7.4f, "
-                    "RK4 law reference %+7.4f; soft disks (exact) %+7.4f, engine disks %+7.4f  h_max/r %.2e  contact steps %d\n",
-                    bor, theta0 * 180 / kPi, thetaRef * 180 / kPi, err0 * 180 / kPi, tol * 180 / kPi, err1 * 180 / kPi,
-                    (kPi - std::abs(ref.chi0) - thetaRef) * 180 / kPi, (thetaSoft - thetaRef) * 180 / kPi,
-                    (thetaDisk - thetaRef) * 180 / kPi, got.hMax / r, got.contactSteps);
-        std::printf("          dE/E 64-gons %+.3e (RK4 law reference %+.3e, difference %.1e), disks %+.2e;  dP/(m u) %.1e;  "
-                    "omega %+.6g %+.6g rad/s (reference %+.6g, disks %.1e)\n",
-                    got.energyRel, ref.energyRel, std::abs(got.energyRel - ref.energyRel), disk.energyRel, got.momentumRel,
-                    got.omega0, got.omega1, ref.omega0, disk.omega0);
+        std::printf(
+            "b/r %.2f  theta %8.4f deg (2 asin(b/r) %8.4f): err %+7.4f deg (tol %.3f), particle 1 %+7.4f, "
+            "RK4 law reference %+7.4f; soft disks (exact) %+7.4f, engine disks %+7.4f  h_max/r %.2e  contact "
+            "steps %d\n",
+            bor, theta0 * 180 / kPi, thetaRef * 180 / kPi, err0 * 180 / kPi, tol * 180 / kPi,
+            err1 * 180 / kPi, (kPi - std::abs(ref.chi0) - thetaRef) * 180 / kPi,
+            (thetaSoft - thetaRef) * 180 / kPi, (thetaDisk - thetaRef) * 180 / kPi, got.hMax / r,
+            got.contactSteps);
+        std::printf(
+            "          dE/E 64-gons %+.3e (RK4 law reference %+.3e, difference %.1e), disks %+.2e;  dP/(m u) "
+            "%.1e;  "
+            "omega %+.6g %+.6g rad/s (reference %+.6g, disks %.1e)\n",
+            got.energyRel, ref.energyRel, std::abs(got.energyRel - ref.energyRel), disk.energyRel,
+            got.momentumRel, got.omega0, got.omega1, ref.omega0, disk.omega0);
         EXPECT_LT(std::abs(err0), tol);
         EXPECT_LT(std::abs(err1), tol);
         EXPECT_LT(std::abs(errDisk), 1e-4) << "disks vs exact soft-disk scattering (integrator error only)";
@@ -306,9 +320,11 @@ TEST(PolygonCollision, ScatteringAngle) {
         // under a half turn: both polygons spin equally, with the same sign (spec 8.2 item 3);
         // the rotation comes from the corners (disks with mu = 0 do not turn).
         const Real om = std::max(std::abs(got.omega0), std::abs(got.omega1));
-        EXPECT_LE(std::abs(got.omega0 - got.omega1), 1e-9 * om) << "omega " << got.omega0 << " vs " << got.omega1;
+        EXPECT_LE(std::abs(got.omega0 - got.omega1), 1e-9 * om)
+            << "omega " << got.omega0 << " vs " << got.omega1;
         EXPECT_GT(om * kR / kU, 1e-4) << "the 64-gons should acquire a spin";
-        EXPECT_LT(std::abs(got.omega0 - ref.omega0), 1e-3 * om + 1e-4 * kU / kR) << "reference " << ref.omega0;
+        EXPECT_LT(std::abs(got.omega0 - ref.omega0), 1e-3 * om + 1e-4 * kU / kR)
+            << "reference " << ref.omega0;
         EXPECT_LT(std::abs(disk.omega0) * kR / kU, 1e-12);
         worstDeg = std::max({worstDeg, std::abs(err0) * 180 / kPi, std::abs(err1) * 180 / kPi});
         worstDiskDeg = std::max(worstDiskDeg, std::abs(errDisk));
@@ -319,9 +335,12 @@ TEST(PolygonCollision, ScatteringAngle) {
         worstOmega = std::max(worstOmega, std::abs(got.omega0 - got.omega1) / om);
         worstRefAngle = std::max(worstRefAngle, std::abs(errRef));
     }
-    std::printf("worst: angle %.4f deg (engine disks vs exact soft disks %.1e rad), engine vs reference angle %.1e rad; |dE/E| of the law %.2e, "
-                "engine - reference %.1e, disks %.1e; dP %.1e; omega asymmetry %.1e\n",
-                worstDeg, worstDiskDeg, worstRefAngle, worstLaw, worstIntegrator, worstDisk, worstMomentum, worstOmega);
+    std::printf(
+        "worst: angle %.4f deg (engine disks vs exact soft disks %.1e rad), engine vs reference angle %.1e "
+        "rad; |dE/E| of the law %.2e, "
+        "engine - reference %.1e, disks %.1e; dP %.1e; omega asymmetry %.1e\n",
+        worstDeg, worstDiskDeg, worstRefAngle, worstLaw, worstIntegrator, worstDisk, worstMomentum,
+        worstOmega);
 }
 
 // ------------------------------------------------------------------------------------------
@@ -381,8 +400,9 @@ TEST(PolygonCollision, RingCollapse) {
         // the same polygon as angle 0, symmetry axis along x): every particle is the same up to a
         // rotation about the ring centre (spec 8.2 item 5).
         const Ring got = ringCollapse(N, true);
-        std::printf("N %2d (divides 64)  steps %d  worst speed error %.2e  worst angle from radial %.2e rad\n", N,
-                    got.steps, got.speedErr, got.angleErr);
+        std::printf(
+            "N %2d (divides 64)  steps %d  worst speed error %.2e  worst angle from radial %.2e rad\n", N,
+            got.steps, got.speedErr, got.angleErr);
         // Spec: speed errors below 1 % in the worst case.
         EXPECT_LT(got.speedErr, 0.01);
         // Each polygon is mirror symmetric about its radial line and all contacts are the same, so
@@ -409,8 +429,9 @@ TEST(PolygonCollision, DISABLED_RingCollapseNonDivisorsWithinOnePercent) {
     for (const int N : {6, 12, 24}) {
         SCOPED_TRACE(fmt::format("N = {} (angle 0)", N));
         const Ring got = ringCollapse(N, false);
-        std::printf("N %2d (angle 0)     steps %d  worst speed error %.2e  worst angle from radial %.2e rad\n", N,
-                    got.steps, got.speedErr, got.angleErr);
+        std::printf(
+            "N %2d (angle 0)     steps %d  worst speed error %.2e  worst angle from radial %.2e rad\n", N,
+            got.steps, got.speedErr, got.angleErr);
         EXPECT_LT(got.speedErr, 0.01);
     }
 }

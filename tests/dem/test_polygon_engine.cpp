@@ -8,9 +8,9 @@
 #include <set>
 
 #include "../support.hpp"
+#include "app/dem/dem_engine.hpp"
 #include "dem/broad_phase.hpp"
 #include "dem/forces_area.hpp"
-#include "app/dem/dem_engine.hpp"
 
 using namespace granulab;
 using namespace granulab::dem;
@@ -43,7 +43,8 @@ area::AreaPair pairWith(Real area, Real ri, Real rj, Vec2 vi = {}, Vec2 vj = {})
 TEST(AreaLaw, ElasticForceIsEAOverL) {
     const AreaNormal nl{1e7, 0};
     Real xi = 0, aOld = 0;
-    const auto f = area::areaLaw(nl, NoDamping{}, NoFriction{}, pairWith(2e-9, 1e-3, 3e-3), 1e-6, 1 / 1e-6, xi, aOld);
+    const auto f =
+        area::areaLaw(nl, NoDamping{}, NoFriction{}, pairWith(2e-9, 1e-3, 3e-3), 1e-6, 1 / 1e-6, xi, aOld);
     const Real l = 1e-3 * 3e-3 / 4e-3;
     EXPECT_NEAR(f.onI.x, 1e7 * 2e-9 / l, 1e-12);  // Eq. 2.20, along n
     EXPECT_EQ(f.onI.y, 0.0);
@@ -107,9 +108,10 @@ TEST(AreaLaw, CundallStrackSpringViscousTermAndCap) {
 TEST(AreaLaw, CohesionPullsAlongMinusNormalWithContactLength) {
     const AreaNormal nl{1e7, 2e4};
     Real xi = 0, aOld = 0;
-    const auto f = area::areaLaw(nl, NoDamping{}, NoFriction{}, pairWith(1e-12, 1e-3, 1e-3), 1e-6, 1 / 1e-6, xi, aOld);
+    const auto f =
+        area::areaLaw(nl, NoDamping{}, NoFriction{}, pairWith(1e-12, 1e-3, 1e-3), 1e-6, 1 / 1e-6, xi, aOld);
     EXPECT_NEAR(f.onI.x, 1e7 * 1e-12 / 0.5e-3 - 2e4 * 1e-3, 1e-12);  // Eq. 2.28: L_c = 1 mm
-    EXPECT_LT(f.onI.x, 0.0);  // attractive at this tiny overlap
+    EXPECT_LT(f.onI.x, 0.0);                                         // attractive at this tiny overlap
 }
 
 namespace {

@@ -2,12 +2,12 @@
 // Validation of the gc2d overlap-area force law on polygons (gc2d spec sections 3 and 8.1):
 // force-depth exponents (discs 3/2, faces 1, tips 2), the damping clip that keeps the normal
 // force from attracting, and invariance of force and overlap under rigid motion of the pair.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fmt/format.h>
 #include <vector>
 
 #include "../support.hpp"
@@ -151,7 +151,8 @@ TEST(PolygonForces, DepthScalingExponents) {
             fs.push_back(norm(f));
             // Ideal discs of radius R under the same law: F = 4 E A(d)/d (lens area A, l = d/4).
             const Real d = 2 * R - h;
-            disc.push_back(4 * E * (2 * R * R * std::acos(d / (2 * R)) - 0.5 * d * std::sqrt(4 * R * R - d * d)) / d);
+            disc.push_back(4 * E *
+                           (2 * R * R * std::acos(d / (2 * R)) - 0.5 * d * std::sqrt(4 * R * R - d * d)) / d);
             // Squares have closed forms (spec 3.1-3.2), centres d apart:
             //  - tips: the overlap is a square of diagonal h, A = h^2/2; c1c2 is its other diagonal,
             //    whose midpoint is halfway between the centres: r_i = r_j = d/2, l = d/4;
@@ -164,7 +165,8 @@ TEST(PolygonForces, DepthScalingExponents) {
             if (c.shape == "square") {
                 const Real dd = 2 * c.extent - h;
                 if (c.exponent == 2.0) {
-                    worstExact = std::max(worstExact, std::abs(norm(f) / (E * 0.5 * h * h / (0.25 * dd)) - 1));
+                    worstExact =
+                        std::max(worstExact, std::abs(norm(f) / (E * 0.5 * h * h / (0.25 * dd)) - 1));
                 } else {
                     const Real lo = 4 * E * a * h / dd, hi = lo / (1 - h * h / (dd * dd));
                     worstExact = std::max(worstExact, std::max(lo - norm(f), norm(f) - hi) / lo);
@@ -172,10 +174,12 @@ TEST(PolygonForces, DepthScalingExponents) {
             }
         }
         const Real slope = logSlope(hs, fs);
-        std::printf("%-28s h %.0e..%.0e m: slope %.4f (expected %.1f)  F %.4g ... %.4g N", c.name, hs.front(), hs.back(), slope,
-                    c.exponent, fs.front(), fs.back());
-        if (c.shape == "square") std::printf(", outside the closed form by %.1e", std::max(worstExact, 0.0));
-        else std::printf("; ideal-disc law over the same h: %.4f", logSlope(hs, disc));
+        std::printf("%-28s h %.0e..%.0e m: slope %.4f (expected %.1f)  F %.4g ... %.4g N", c.name, hs.front(),
+                    hs.back(), slope, c.exponent, fs.front(), fs.back());
+        if (c.shape == "square")
+            std::printf(", outside the closed form by %.1e", std::max(worstExact, 0.0));
+        else
+            std::printf("; ideal-disc law over the same h: %.4f", logSlope(hs, disc));
         std::printf("\n");
         EXPECT_NEAR(slope, c.exponent, 0.1);  // spec 8.1: exponents within about +-0.1
         if (c.shape == "square") {
@@ -196,7 +200,7 @@ struct DampedCollision {
     Real tContact = 0;         ///< [s] from first touch to separation
     Real tClip = -1;           ///< [s] from first touch to the first clipped step
     Real restitution = 0;
-    Real hMax = 0;             ///< [m]
+    Real hMax = 0;  ///< [m]
 };
 
 /// Two squares (a = 2 mm) face to face, u = (+-0.5, 0) m/s, gamma damping.
@@ -277,11 +281,13 @@ TEST(PolygonForces, DampingNeverAttracts) {
         SCOPED_TRACE(fmt::format("gamma = {}", gamma));
         const DampedCollision got = squareCollision(gamma, dt, E);
         const auto [tClip, eClosed] = clippedOscillator(w0, gamma);
-        std::printf("gamma %.1f: contact %d steps (%.3g s), h_max/a %.2e, F_max %.4g N, most attractive force %.3g N; "
-                    "clip: %d steps, from %.3g s after first touch (linear closed form %.3g s); restitution %.4f "
-                    "(closed form %.4f)\n",
-                    gamma, got.contactSteps, got.tContact, got.hMax / a, got.fMax, got.fMostAttractive, got.clipSteps,
-                    got.tClip, tClip, got.restitution, eClosed);
+        std::printf(
+            "gamma %.1f: contact %d steps (%.3g s), h_max/a %.2e, F_max %.4g N, most attractive force %.3g "
+            "N; "
+            "clip: %d steps, from %.3g s after first touch (linear closed form %.3g s); restitution %.4f "
+            "(closed form %.4f)\n",
+            gamma, got.contactSteps, got.tContact, got.hMax / a, got.fMax, got.fMostAttractive, got.clipSteps,
+            got.tClip, tClip, got.restitution, eClosed);
         // Never attractive: with the clip D >= -F_el the normal force is >= 0 exactly (F_el + D
         // evaluates to +0 when clipped); only the direction of the normal carries round-off.
         EXPECT_LE(got.fMostAttractive, 1e-12 * got.fMax);
@@ -302,8 +308,10 @@ TEST(PolygonForces, DampingNeverAttracts) {
         const Real relZeta = got.hMax / (2 * a) + 0.5 * w0 * dt;
         const Real tolE = 2 * std::abs(S) * relZeta * eClosed;
         const Real tolClip = 2 * (2 * dt + std::abs(St) * relZeta + tClip * got.hMax / (2 * a));
-        std::printf("          restitution - closed form %+.2e (tol %.2e, S = %.2f); clip time - closed form %+.2e s (tol %.2e s, St = %.2e s)\n",
-                    got.restitution - eClosed, tolE, S, got.tClip - tClip, tolClip, St);
+        std::printf(
+            "          restitution - closed form %+.2e (tol %.2e, S = %.2f); clip time - closed form %+.2e s "
+            "(tol %.2e s, St = %.2e s)\n",
+            got.restitution - eClosed, tolE, S, got.tClip - tClip, tolClip, St);
         EXPECT_NEAR(got.restitution, eClosed, tolE);
         EXPECT_NEAR(got.tClip, tClip, tolClip);
         EXPECT_GT(got.restitution, 0.0) << "the squares must separate";
@@ -322,14 +330,16 @@ TEST(PolygonForces, DampingNeverAttracts) {
 // Every overlapping evaluation must be a contact.
 TEST(PolygonForces, AlignedFacesTouchOnFirstOverlap) {
     const Real a = 0.002, u = 0.5, gap = 1e-5, dt = 1.25e-7;
-    dem::World w = test::makeWorldFromToml(header(dt, 1e7, 0.3, kShapes) + particle("square", {-0.5 * (a + gap), 0}, 0, {u, 0}) +
+    dem::World w = test::makeWorldFromToml(header(dt, 1e7, 0.3, kShapes) +
+                                           particle("square", {-0.5 * (a + gap), 0}, 0, {u, 0}) +
                                            particle("square", {0.5 * (a + gap), 0}, 0, {-u, 0}));
     const auto& s = w.store();
     int missed = 0;
     for (int k = 0; k < 200; ++k) {
         ASSERT_EQ(w.step(), dem::kStepOk);
         const std::size_t i = slotOf(s, 0), j = slotOf(s, 1);
-        const Real h = a - (s.x[j] - s.x[i]);  // free flight before the contact: the evaluation saw this depth
+        const Real h =
+            a - (s.x[j] - s.x[i]);  // free flight before the contact: the evaluation saw this depth
         if (h > 1e-9 && w.forceStats().contacts == 0) {
             ++missed;
             std::printf("step %d: overlap %.3e m but no contact\n", k + 1, h);
@@ -360,10 +370,10 @@ struct PairState {
 };
 
 struct PairResult {
-    Vec2 f0;          ///< [N] force on particle 0
+    Vec2 f0;  ///< [N] force on particle 0
     Real torque0 = 0, torque1 = 0;
-    Real area = 0;    ///< [m^2] overlap area (geom::convexOverlap of the world corners)
-    Real elastic = 0; ///< [J] World::energies().elastic
+    Real area = 0;     ///< [m^2] overlap area (geom::convexOverlap of the world corners)
+    Real elastic = 0;  ///< [J] World::energies().elastic
 };
 
 std::vector<Vec2> worldCorners(const dem::World& w, std::size_t slot) {
@@ -376,8 +386,8 @@ std::vector<Vec2> worldCorners(const dem::World& w, std::size_t slot) {
 }
 
 PairResult evaluatePair(const PairState& p, Real E) {
-    const dem::World w =
-        pressedWorld(header(1e-7, E, 0.0, kIrregular) + particle("pentagon", p.x0, p.a0) + particle("octagon", p.x1, p.a1));
+    const dem::World w = pressedWorld(header(1e-7, E, 0.0, kIrregular) + particle("pentagon", p.x0, p.a0) +
+                                      particle("octagon", p.x1, p.a1));
     const auto& s = w.store();
     const std::size_t i = slotOf(s, 0), j = slotOf(s, 1);
     PairResult r;
@@ -406,11 +416,14 @@ TEST(PolygonForces, OverlapInvariantUnderRigidMotion) {
     base.a1 = -1.1;
     const Vec2 dir = rotate({1, 0}, 0.23);
     {
-        const dem::World probe = pressedWorld(header(1e-7, E, 0.0, kIrregular) + particle("pentagon", {0, 0}, base.a0) +
-                                              particle("octagon", dir * 0.01, base.a1));
+        const dem::World probe =
+            pressedWorld(header(1e-7, E, 0.0, kIrregular) + particle("pentagon", {0, 0}, base.a0) +
+                         particle("octagon", dir * 0.01, base.a1));
         Real lo = 0, hi = 0.01;  // centre distance: overlapping at lo, apart at hi
         const auto& s = probe.store();
-        const auto bodyOf = [&](ParticleId id) { return probe.shapes().shapeCorners(s.shape[slotOf(s, id)]); };
+        const auto bodyOf = [&](ParticleId id) {
+            return probe.shapes().shapeCorners(s.shape[slotOf(s, id)]);
+        };
         const auto place = [](const std::vector<Vec2>& body, Vec2 x, Real angle) {
             std::vector<Vec2> c;
             for (const Vec2 p : body) c.push_back(x + rotate(p, angle));
@@ -419,23 +432,25 @@ TEST(PolygonForces, OverlapInvariantUnderRigidMotion) {
         const auto b0 = place(bodyOf(0), {0, 0}, base.a0);
         for (int k = 0; k < 200; ++k) {
             const Real mid = 0.5 * (lo + hi);
-            if (geom::convexOverlap(b0, place(bodyOf(1), dir * mid, base.a1)).area > 0) lo = mid;
-            else hi = mid;
+            if (geom::convexOverlap(b0, place(bodyOf(1), dir * mid, base.a1)).area > 0)
+                lo = mid;
+            else
+                hi = mid;
         }
         base.x0 = {0.0012, -0.0007};
         base.x1 = base.x0 + dir * (hi - 1e-5);
     }
     const PairResult ref = evaluatePair(base, E);
     ASSERT_GT(ref.area, 0.0);
-    std::printf("reference: |F| %.10g N, torques %.6g %.6g N m, area %.6g m^2, elastic %.6g J\n", norm(ref.f0), ref.torque0,
-                ref.torque1, ref.area, ref.elastic);
+    std::printf("reference: |F| %.10g N, torques %.6g %.6g N m, area %.6g m^2, elastic %.6g J\n",
+                norm(ref.f0), ref.torque0, ref.torque1, ref.area, ref.elastic);
     // Rigid motions: rotation by alpha about the origin, then translation t (up to 0.6 m, so
     // that round-off of the coordinates, ~1e-16 m, stays far below 1e-9 of the 1e-5 m overlap).
     struct Motion {
         Real alpha;
         Vec2 t;
     };
-    const Motion motions[] = {{0.0, {0.31, -0.17}}, {kPi / 2, {0, 0}},      {1.234, {-0.6, 0.45}},
+    const Motion motions[] = {{0.0, {0.31, -0.17}}, {kPi / 2, {0, 0}},     {1.234, {-0.6, 0.45}},
                               {-2.9, {0.002, 0.5}}, {kPi, {-0.25, -0.25}}, {0.5 * kPi / 64, {0.1, 0.0}}};
     Real worst = 0;
     for (const Motion& m : motions) {
@@ -453,8 +468,9 @@ TEST(PolygonForces, OverlapInvariantUnderRigidMotion) {
         const Real dT = std::max(std::abs(got.torque0 - ref.torque0) / std::abs(ref.torque0),
                                  std::abs(got.torque1 - ref.torque1) / std::abs(ref.torque1));
         const Real dE = std::abs(got.elastic - ref.elastic) / ref.elastic;
-        std::printf("alpha %+.4f t (%+.3f, %+.3f): |F| %.2e, F rotated %.2e, torques %.2e, area %.2e, elastic %.2e\n",
-                    m.alpha, m.t.x, m.t.y, dF, dDir, dT, dA, dE);
+        std::printf(
+            "alpha %+.4f t (%+.3f, %+.3f): |F| %.2e, F rotated %.2e, torques %.2e, area %.2e, elastic %.2e\n",
+            m.alpha, m.t.x, m.t.y, dF, dDir, dT, dA, dE);
         EXPECT_LT(dF, 1e-9);
         EXPECT_LT(dDir, 1e-9);
         EXPECT_LT(dA, 1e-9);

@@ -2,11 +2,11 @@
 // Rolling resistance (cfddem Eq. 3.56-3.59): a disk rolling on a floor keeps rolling without it,
 // is braked by the rolling damper, and the rolling spring holds a disk on a gentle slope where
 // it would otherwise roll away with a = 2/3 g sin(theta).
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
-#include <fmt/format.h>
 
 #include "../support.hpp"
 
@@ -15,7 +15,8 @@ using namespace granulab;
 namespace {
 dem::World rollingDisk(const std::string& rolling, Real slope) {
     const Real g = 9.81;
-    return test::makeWorldFromToml(fmt::format(R"(
+    return test::makeWorldFromToml(
+        fmt::format(R"(
 [run]
 end_time = 10.0
 [dem]
@@ -42,9 +43,9 @@ material = "g"
 points = [[-100.0, 0.0], [100.0, 0.0]]
 material = "g"
 )",
-                                               fmt::arg("gx", g * std::sin(slope)), fmt::arg("gy", -g * std::cos(slope)),
-                                               fmt::arg("rolling", rolling), fmt::arg("v", slope == 0 ? 0.5 : 0.0),
-                                               fmt::arg("w", slope == 0 ? -5.0 : 0.0)));
+                    fmt::arg("gx", g * std::sin(slope)), fmt::arg("gy", -g * std::cos(slope)),
+                    fmt::arg("rolling", rolling), fmt::arg("v", slope == 0 ? 0.5 : 0.0),
+                    fmt::arg("w", slope == 0 ? -5.0 : 0.0)));
 }
 }  // namespace
 
@@ -55,8 +56,8 @@ TEST(Rolling, DamperBrakesARollingDisk) {
         free.step();
         braked.step();
     }
-    std::printf("rolling disk after 1 s: %.4f m/s free, %.4f m/s with the rolling damper\n", free.store().vx[0],
-                braked.store().vx[0]);
+    std::printf("rolling disk after 1 s: %.4f m/s free, %.4f m/s with the rolling damper\n",
+                free.store().vx[0], braked.store().vx[0]);
     EXPECT_NEAR(free.store().vx[0], 0.5, 0.005);     // pure rolling: no dissipation
     EXPECT_NEAR(free.store().omega[0], -5.0, 0.05);  // still rolling without slip
     EXPECT_LT(std::abs(braked.store().vx[0]), 0.25);
@@ -71,8 +72,8 @@ TEST(Rolling, SpringHoldsADiskOnAGentleSlope) {
         held.step();
     }
     const Real expected = 0.5 * (2.0 / 3.0) * 9.81 * std::sin(slope);  // x = a t^2 / 2 at t = 1 s
-    std::printf("slope: free disk rolled %.4f m (2/3 g sin: %.4f), held disk %.2e m\n", free.store().x[0], expected,
-                held.store().x[0]);
+    std::printf("slope: free disk rolled %.4f m (2/3 g sin: %.4f), held disk %.2e m\n", free.store().x[0],
+                expected, held.store().x[0]);
     EXPECT_NEAR(free.store().x[0] / expected, 1.0, 0.03);
     EXPECT_LT(std::abs(held.store().x[0]), 1e-3);
 }

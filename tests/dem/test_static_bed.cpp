@@ -66,9 +66,10 @@ material = "side"
     const std::int64_t steps = static_cast<std::int64_t>(10.0 / 2.0e-4);
     for (std::int64_t k = 0; k < steps; ++k) ASSERT_EQ(w.step(), dem::kStepOk);
     const auto e = w.energies();
-    EXPECT_LT(e.kinetic, 1e-6 * weight);  // static
+    EXPECT_LT(e.kinetic, 1e-6 * weight);     // static
     const Real floor = -w.wallForce()[0].y;  // particles push the floor down
-    std::printf("floor force / weight = %.6f, kinetic energy / weight = %.2e\n", floor / weight, e.kinetic / weight);
+    std::printf("floor force / weight = %.6f, kinetic energy / weight = %.2e\n", floor / weight,
+                e.kinetic / weight);
     EXPECT_NEAR(floor / weight, 1.0, 0.005) << "floor " << floor << " weight " << weight;
     // Side walls are frictionless: they carry no vertical load.
     EXPECT_NEAR(w.wallForce()[1].y, 0.0, 1e-9 * weight);

@@ -5,11 +5,11 @@
 // 2 pi sqrt(m_t/k_t), m_t = 2m/7 (translation + rolling of a sphere). With D_t = 0 the amplitude
 // is conserved within 1 % over 10 periods at >= 200 steps per period (trapezoidal spring
 // increment of the iterating predictor-corrector); with D_t > 0 it decays.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
-#include <fmt/format.h>
 
 #include "../support.hpp"
 
@@ -19,9 +19,9 @@ namespace {
 constexpr Real kR = 0.5, kRho = 7700, kE = 1.962e11, kNu = 0.3, kG = 9.81;
 
 struct Oscillation {
-    Real period = 0;           ///< [s] from zero crossings of the spring
-    Real firstAmplitude = 0;   ///< [m] largest |xi| in the first measured period
-    Real lastAmplitude = 0;    ///< [m] the same 10 periods later
+    Real period = 0;          ///< [s] from zero crossings of the spring
+    Real firstAmplitude = 0;  ///< [m] largest |xi| in the first measured period
+    Real lastAmplitude = 0;   ///< [m] the same 10 periods later
 };
 
 Oscillation run(const std::string& integrator, Real dampingRatioT, Real dt, Real expectedPeriod) {
@@ -105,14 +105,17 @@ Real expectedPeriod() {
 TEST(TangentialOscillation, T4PeriodAndConservedAmplitude) {
     const Real period = expectedPeriod();
     const Oscillation pc = run("pc", 0.0, period / 200, period);
-    std::printf("T4 pc: period %.5g s (expected %.5g), amplitude %.4g -> %.4g m over 10 periods (%.3f %%)\n", pc.period,
-                period, pc.firstAmplitude, pc.lastAmplitude, 100 * (pc.lastAmplitude / pc.firstAmplitude - 1));
+    std::printf("T4 pc: period %.5g s (expected %.5g), amplitude %.4g -> %.4g m over 10 periods (%.3f %%)\n",
+                pc.period, period, pc.firstAmplitude, pc.lastAmplitude,
+                100 * (pc.lastAmplitude / pc.firstAmplitude - 1));
     EXPECT_NEAR(pc.period / period, 1.0, 0.01);
     EXPECT_NEAR(pc.lastAmplitude / pc.firstAmplitude, 1.0, 0.01);
     const Oscillation verlet = run("verlet", 0.0, period / 200, period);
-    std::printf("T4 verlet: period %.5g s, amplitude ratio %.4f\n", verlet.period, verlet.lastAmplitude / verlet.firstAmplitude);
+    std::printf("T4 verlet: period %.5g s, amplitude ratio %.4f\n", verlet.period,
+                verlet.lastAmplitude / verlet.firstAmplitude);
     EXPECT_NEAR(verlet.lastAmplitude / verlet.firstAmplitude, 1.0, 0.01);
     const Oscillation damped = run("pc", 0.1, period / 200, period);
-    std::printf("T4 pc, D_t = 0.1: amplitude ratio %.4f over 10 periods\n", damped.lastAmplitude / damped.firstAmplitude);
+    std::printf("T4 pc, D_t = 0.1: amplitude ratio %.4f over 10 periods\n",
+                damped.lastAmplitude / damped.firstAmplitude);
     EXPECT_LT(damped.lastAmplitude / damped.firstAmplitude, 0.5);
 }

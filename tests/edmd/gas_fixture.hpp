@@ -10,11 +10,11 @@
 #include <cstdint>
 #include <vector>
 
-#include "edmd/kinetic_theory.hpp"
-#include "core/rng.hpp"
 #include "analysis/point_set.hpp"
+#include "core/rng.hpp"
 #include "edmd/engine.hpp"
 #include "edmd/initial_state.hpp"
+#include "edmd/kinetic_theory.hpp"
 
 namespace granulab::edmd::validation {
 
@@ -61,7 +61,8 @@ GasState<D> latticeGas(int n, Real L, Real a, std::uint64_t seed) {
 /// A periodic gas of `count` particles of radius 1 and mass 1 at temperature 1 and volume fraction
 /// nu, started on the lattice (spec 4.2 steps 1-2). The engine starts elastic.
 template <int D>
-Engine<D> makeGas(std::uint64_t count, Real nu, std::uint64_t seed, const Restitution& rules = {}, Real tc = 0) {
+Engine<D> makeGas(std::uint64_t count, Real nu, std::uint64_t seed, const Restitution& rules = {},
+                  Real tc = 0) {
     const Real L = edmd::boxLengthFor(D, static_cast<Real>(count), nu, 1.0);
     InitialStateSpec spec;
     spec.box = {L, L, L};

@@ -41,11 +41,12 @@ TEST(EdmdEngine, ElasticDisksConserveEnergyAndMomentumAndNeverOverlap) {
     Real t = 0;
     while (e.stats().collisions < 100000) e.runUntil(t += 0.05);
     const auto p = e.momentum();
-    std::printf("disks: %llu collisions, %llu events (%llu annulled, %llu cell crossings), dE/E %.2e, |P| %.2e, "
-                "min gap / contact %.15f\n",
-                (unsigned long long)e.stats().collisions, (unsigned long long)e.stats().events,
-                (unsigned long long)e.stats().annulled, (unsigned long long)e.stats().cellCrossings,
-                e.kineticEnergy() / e0 - 1, std::sqrt(dot(p, p)), minimumGapRatio(e));
+    std::printf(
+        "disks: %llu collisions, %llu events (%llu annulled, %llu cell crossings), dE/E %.2e, |P| %.2e, "
+        "min gap / contact %.15f\n",
+        (unsigned long long)e.stats().collisions, (unsigned long long)e.stats().events,
+        (unsigned long long)e.stats().annulled, (unsigned long long)e.stats().cellCrossings,
+        e.kineticEnergy() / e0 - 1, std::sqrt(dot(p, p)), minimumGapRatio(e));
     EXPECT_NEAR(e.kineticEnergy() / e0, 1.0, 1e-10);  // round-off of 1e5 collision rules
     EXPECT_LT(std::sqrt(dot(p, p)), 1e-9);
     EXPECT_GT(minimumGapRatio(e), 1 - 1e-9);
@@ -101,8 +102,8 @@ TEST(EdmdEngine, TcModelMakesQuickRepeatCollisionsElastic) {
         c.restitution.eps = 0.5;
         c.tc = tc;
         const Real a = 0.05;
-        Engine<2, CalendarQueue> e(c, {VecD<2>{{0.3, 0.5}}, VecD<2>{{0.7, 0.5}}}, {VecD<2>{{1, 0}}, VecD<2>{{-1, 0}}},
-                                   {a, a}, {1.0, 1.0});
+        Engine<2, CalendarQueue> e(c, {VecD<2>{{0.3, 0.5}}, VecD<2>{{0.7, 0.5}}},
+                                   {VecD<2>{{1, 0}}, VecD<2>{{-1, 0}}}, {a, a}, {1.0, 1.0});
         e.runUntil(0.16);  // first contact at t = (0.4 - 0.1)/2 = 0.15
         ASSERT_EQ(e.stats().collisions, 1u);
         EXPECT_NEAR(e.velocityNow(0)[0] - e.velocityNow(1)[0], -1.0, 1e-14);  // |v_rel| 2 -> 1

@@ -109,9 +109,10 @@ TEST(EdmdWalls, InelasticGasSettlesOnTheFloorWithTheTcModel) {
         lowest = std::min(lowest, e.positionNow(i)[1]);
         highest = std::max(highest, e.positionNow(i)[1]);
     }
-    std::printf("settling: %llu events, %llu collisions (%llu TC-elastic), KE %.3e J, lowest %.6f highest %.4f m\n",
-                (unsigned long long)e.stats().events, (unsigned long long)e.stats().collisions,
-                (unsigned long long)e.stats().tcElastic, e.kineticEnergy(), lowest, highest);
+    std::printf(
+        "settling: %llu events, %llu collisions (%llu TC-elastic), KE %.3e J, lowest %.6f highest %.4f m\n",
+        (unsigned long long)e.stats().events, (unsigned long long)e.stats().collisions,
+        (unsigned long long)e.stats().tcElastic, e.kineticEnergy(), lowest, highest);
     EXPECT_GT(lowest, 0.02 - 1e-12);
     // 100 disks of diameter 0.04 in a 1 m wide box: 4 layers; the bed top below 0.2 m.
     EXPECT_LT(highest, 0.2);
@@ -137,7 +138,8 @@ TEST(EdmdRough, PerfectlyRoughElasticSpheresConserveEnergyAndShareItEqually) {
     }
     const Real total = e.kineticEnergy() + e.rotationalEnergy();
     const Real ratio = ratioSum / samples;
-    std::printf("rough spheres: dE/E %.2e, <E_rot/E_trans> = %.4f over %d samples\n", total / e0 - 1, ratio, samples);
+    std::printf("rough spheres: dE/E %.2e, <E_rot/E_trans> = %.4f over %d samples\n", total / e0 - 1, ratio,
+                samples);
     EXPECT_NEAR(total / e0, 1.0, 1e-10);
     // Equipartition: 3 rotational and 3 translational degrees of freedom. N = 512 gives
     // fluctuations of the ratio of ~sqrt(4/(3N)) = 5 % per sample; the average over
@@ -184,9 +186,10 @@ TEST(EdmdGrowing, GrowingSpheresNeverOverlapAndReGrid) {
         e.runUntil(tEnd * k / 20);
         worst = std::min(worst, minimumGapRatio(e));
     }
-    std::printf("growing: a %.4f -> %.4f, %llu collisions, %llu regrids, cells %d, E/E0 %.3f, min gap %.15f\n", a0,
-                e.radius(0), (unsigned long long)e.stats().collisions, (unsigned long long)e.stats().regrids,
-                e.cellsPerAxis()[0], e.kineticEnergy() / e0, worst);
+    std::printf(
+        "growing: a %.4f -> %.4f, %llu collisions, %llu regrids, cells %d, E/E0 %.3f, min gap %.15f\n", a0,
+        e.radius(0), (unsigned long long)e.stats().collisions, (unsigned long long)e.stats().regrids,
+        e.cellsPerAxis()[0], e.kineticEnergy() / e0, worst);
     EXPECT_NEAR(e.radius(0), a1, 1e-12);
     EXPECT_GT(e.stats().regrids, 0u);
     EXPECT_GT(worst, 1 - 1e-9);
@@ -207,8 +210,8 @@ TEST(EdmdRestitution, SpeedDependentModelsHaveTheirLimits) {
     // In the engine: a head-on pair at relative speed 1 with v0 = 2 leaves at eps(1) * 1.
     EngineConfig c;
     c.restitution = mf;
-    Engine<2> e(c, {VecD<2>{{0.3, 0.5}}, VecD<2>{{0.7, 0.5}}}, {VecD<2>{{0.5, 0}}, VecD<2>{{-0.5, 0}}}, {0.05, 0.05},
-                {1.0, 1.0});
+    Engine<2> e(c, {VecD<2>{{0.3, 0.5}}, VecD<2>{{0.7, 0.5}}}, {VecD<2>{{0.5, 0}}, VecD<2>{{-0.5, 0}}},
+                {0.05, 0.05}, {1.0, 1.0});
     e.runUntil(0.4);
     ASSERT_EQ(e.stats().collisions, 1u);
     EXPECT_NEAR(e.velocityNow(1)[0] - e.velocityNow(0)[0], mf(1.0), 1e-14);

@@ -55,11 +55,13 @@ void agreesWithSortedReference(std::uint32_t n, std::uint64_t seed, int operatio
 }  // namespace
 
 TEST(EventQueue, AddressableHeapAgreesWithSortedReference) {
-    for (std::uint32_t n : {1u, 2u, 3u, 7u, 64u, 1000u}) agreesWithSortedReference<edmd::AddressableHeap>(n, n, 20000);
+    for (std::uint32_t n : {1u, 2u, 3u, 7u, 64u, 1000u})
+        agreesWithSortedReference<edmd::AddressableHeap>(n, n, 20000);
 }
 
 TEST(EventQueue, TournamentTreeAgreesWithSortedReference) {
-    for (std::uint32_t n : {1u, 2u, 3u, 7u, 64u, 1000u}) agreesWithSortedReference<edmd::TournamentTree>(n, n, 20000);
+    for (std::uint32_t n : {1u, 2u, 3u, 7u, 64u, 1000u})
+        agreesWithSortedReference<edmd::TournamentTree>(n, n, 20000);
 }
 
 TEST(EventQueue, TiesGoToTheSmallerIndex) {
@@ -80,7 +82,8 @@ TEST(EventQueue, TiesGoToTheSmallerIndex) {
 }
 
 TEST(EventQueue, CalendarQueueAgreesWithSortedReference) {
-    for (std::uint32_t n : {1u, 2u, 3u, 7u, 64u, 1000u}) agreesWithSortedReference<edmd::CalendarQueue>(n, n, 20000);
+    for (std::uint32_t n : {1u, 2u, 3u, 7u, 64u, 1000u})
+        agreesWithSortedReference<edmd::CalendarQueue>(n, n, 20000);
 }
 
 TEST(EventQueue, CalendarQueueHandlesOnlyInfiniteAndFarFutureEvents) {

@@ -88,13 +88,15 @@ HaffRun haffRun(std::uint64_t n, Real eps, Real tauMax, Real tauStep, int seeds,
 }
 
 void printHaff(int dim, std::uint64_t n, int seeds, Real eps, const HaffRun& r) {
-    std::printf("[Haff %dD N=%llu x %d runs, nu=0.25, eps=%.3f, t_c=1e-5 t_E] lambda %.4f vs lambda_cl %.4f "
-                "(lambda_sh %.4f), t_E %.4f; mean T/T_Haff:",
-                dim, (unsigned long long)n, seeds, eps, r.lambda, r.lambdaCl, r.lambdaSh, r.tE);
+    std::printf(
+        "[Haff %dD N=%llu x %d runs, nu=0.25, eps=%.3f, t_c=1e-5 t_E] lambda %.4f vs lambda_cl %.4f "
+        "(lambda_sh %.4f), t_E %.4f; mean T/T_Haff:",
+        dim, (unsigned long long)n, seeds, eps, r.lambda, r.lambdaCl, r.lambdaSh, r.tE);
     for (std::size_t k = 0; k < r.tau.size(); ++k)
         if (std::fmod(r.tau[k] + 1e-9, 0.5) < 1e-6) std::printf(" tau %.1f: %.4f", r.tau[k], r.ratio[k]);
-    std::printf("; loss per collision / (lambda T) %.4f; %llu collisions (%llu TC-elastic), %.1f s\n", r.lossPerCollision,
-                (unsigned long long)r.collisions, (unsigned long long)r.tcElastic, r.seconds);
+    std::printf("; loss per collision / (lambda T) %.4f; %llu collisions (%llu TC-elastic), %.1f s\n",
+                r.lossPerCollision, (unsigned long long)r.collisions, (unsigned long long)r.tcElastic,
+                r.seconds);
 }
 
 }  // namespace
@@ -152,28 +154,32 @@ TEST(EdmdValidation, ClusteringOnlyAboveThreshold) {
         Restitution rules;
         rules.eps = eps;
         e.setCollisionRules(rules, 1, 1e-5 * tE);
-        std::printf("[clustering 2D N=%llu nu=0.25 eps=%.3f] lambda %.4f, lambda_cl %.4f (lambda/lambda_cl %.2f), "
-                    "tau_hc %.1f\n",
-                    (unsigned long long)n, eps, lambda, lCl, lambda / lCl, kt::homogeneousClusterTau(2, lambda));
+        std::printf(
+            "[clustering 2D N=%llu nu=0.25 eps=%.3f] lambda %.4f, lambda_cl %.4f (lambda/lambda_cl %.2f), "
+            "tau_hc %.1f\n",
+            (unsigned long long)n, eps, lambda, lCl, lambda / lCl, kt::homogeneousClusterTau(2, lambda));
         Observed o;
         for (const Real tau : {1.0, 5.0, 20.0, 100.0, 400.0}) {
             const Real t = kt::haffTime(2, lambda, tau, tE);
             // Cap the collisions (TC micro-collisions in clusters could explode if the engine broke).
             e.runCollisions(collisionCap - e.stats().collisions, t);
             if (e.stats().collisions >= collisionCap) {
-                ADD_FAILURE() << "collision cap " << collisionCap << " reached before tau " << tau << " (eps " << eps << ")";
+                ADD_FAILURE() << "collision cap " << collisionCap << " reached before tau " << tau << " (eps "
+                              << eps << ")";
                 return o;
             }
             e.runUntil(t);
             const auto snap = snapshot(e);
             const auto cs = kt::computeClusterStats(kt::findClusters(snap, 0.1).sizes, n);
             const auto dd = kt::densityDistribution(snap);
-            o = {cs.largestFraction, dd.quantiles[5] - dd.quantiles[1], temperature(e) / kt::haffTemperature(T0, tau)};
-            std::printf("  tau %5.1f: q_x %.4f, M1 %.3f, local nu q10 %.3f q50 %.3f q90 %.3f (q90-q10 %.3f), "
-                        "E/E_Haff %.3f; %llu events, %llu collisions (%llu TC-elastic), %.1f s\n",
-                        tau, o.qx, cs.moment[1], dd.quantiles[1], dd.quantiles[3], dd.quantiles[5], o.spread,
-                        o.energyRatio, (unsigned long long)e.stats().events, (unsigned long long)e.stats().collisions,
-                        (unsigned long long)e.stats().tcElastic, secondsSince(start));
+            o = {cs.largestFraction, dd.quantiles[5] - dd.quantiles[1],
+                 temperature(e) / kt::haffTemperature(T0, tau)};
+            std::printf(
+                "  tau %5.1f: q_x %.4f, M1 %.3f, local nu q10 %.3f q50 %.3f q90 %.3f (q90-q10 %.3f), "
+                "E/E_Haff %.3f; %llu events, %llu collisions (%llu TC-elastic), %.1f s\n",
+                tau, o.qx, cs.moment[1], dd.quantiles[1], dd.quantiles[3], dd.quantiles[5], o.spread,
+                o.energyRatio, (unsigned long long)e.stats().events, (unsigned long long)e.stats().collisions,
+                (unsigned long long)e.stats().tcElastic, secondsSince(start));
         }
         return o;
     };

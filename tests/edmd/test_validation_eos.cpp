@@ -31,7 +31,8 @@ namespace {
 /// (1 + eta^2/8)/(1 - eta)^2 has the coefficients 3.125, 4.25, 5.375, 6.5, 7.625 for k = 3..7
 /// against the exact 3.128, 4.258, 5.337, 6.363, 7.352: it overestimates Z at high density.
 Real hardDiskVirialZ(Real eta) {
-    const Real reduced[] = {0.782004, 0.53223180, 0.33355604, 0.1988425, 0.1148728, 0.0649930, 0.0362193, 0.0199537};
+    const Real reduced[] = {0.782004,  0.53223180, 0.33355604, 0.1988425,
+                            0.1148728, 0.0649930,  0.0362193,  0.0199537};
     Real z = 1 + 2 * eta, power = eta, coefficient = 0, previous = 0;
     for (int k = 3; k <= 10; ++k) {
         power *= eta;
@@ -53,11 +54,14 @@ Real hardDiskVirialZ(Real eta) {
 /// It has the fourth virial coefficient 18.33 (exact 18.365) where Carnahan-Starling has 18, so CS is
 /// ~0.35 % low in P_red at eta = 0.3 and ~0.2 % at 0.45.
 Real hardSphereKolafaZ(Real eta) {
-    return (1 + eta + eta * eta - 2.0 / 3.0 * (eta * eta * eta + eta * eta * eta * eta)) / std::pow(1 - eta, 3);
+    return (1 + eta + eta * eta - 2.0 / 3.0 * (eta * eta * eta + eta * eta * eta * eta)) /
+           std::pow(1 - eta, 3);
 }
 
 /// Reduced pressure of the best reference EOS (see above).
-Real referenceReducedPressure(int dim, Real nu) { return (dim == 2 ? hardDiskVirialZ(nu) : hardSphereKolafaZ(nu)) - 1; }
+Real referenceReducedPressure(int dim, Real nu) {
+    return (dim == 2 ? hardDiskVirialZ(nu) : hardSphereKolafaZ(nu)) - 1;
+}
 
 /// Elastic equilibrium measurement: reduced pressure P V/(N T) - 1 from the collisional virial,
 /// the collision frequency f = 2 C/(N t), and the ratio of f to Enskog's f_E evaluated with the
@@ -97,7 +101,8 @@ EosRun measureEos(std::uint64_t n, Real nu, std::uint64_t collisions, int blocks
         // Enskog with the measured contact value g = P_red/(2^(D-1) nu) (spec Eq. 4.45):
         // f_E(g) = D 2^(D-1) nu g sqrt(T/m)/(sqrt(pi) a) = D P_red sqrt(T/m)/(sqrt(pi) a).
         const Real gMeasured = pRed / (std::pow(2.0, D - 1) * nu);
-        const Real fEnskog = kt::enskogCollisionFrequency(D, nu, T, 1, 1) * gMeasured / kt::contactValue(D, nu);
+        const Real fEnskog =
+            kt::enskogCollisionFrequency(D, nu, T, 1, 1) * gMeasured / kt::contactValue(D, nu);
         p.push_back(pRed);
         f.push_back(freq);
         r.push_back(freq / fEnskog);
@@ -126,7 +131,8 @@ const EosRun& eosRun(int dim, Real nu, std::uint64_t collisions = 3000000) {
         // N = 4096 (64^2 disks, 16^3 spheres): finite-size corrections to P are O(1/N); the
         // agreement with the reference EOS to <~0.1 % below bounds them. 3e6 collisions in 30
         // blocks (~50 collisions per particle each) give a statistical error of ~0.1 % on P_red.
-        const EosRun run = dim == 2 ? measureEos<2>(4096, nu, collisions, 30, 11) : measureEos<3>(4096, nu, collisions, 30, 12);
+        const EosRun run = dim == 2 ? measureEos<2>(4096, nu, collisions, 30, 11)
+                                    : measureEos<3>(4096, nu, collisions, 30, 12);
         it = cache.emplace(key, run).first;
     }
     return it->second;
@@ -149,10 +155,11 @@ TEST(EdmdValidation, ElasticGasConservesEnergyAndMomentumWithoutOverlap) {
         worstGap = std::min(worstGap, minimumGapRatio(e));
     }
     const Real seconds = std::chrono::duration<Real>(std::chrono::steady_clock::now() - start).count();
-    std::printf("[elastic 3D N=4000 nu=0.3] %llu collisions, %llu events (%llu annulled), max |dE/E| %.2e, "
-                "max |P|/sqrt(NmT) %.2e, min pair distance/(2a) %.15f (10 O(N^2) checks), %.1f s\n",
-                (unsigned long long)e.stats().collisions, (unsigned long long)e.stats().events,
-                (unsigned long long)e.stats().annulled, worstEnergy, worstMomentum, worstGap, seconds);
+    std::printf(
+        "[elastic 3D N=4000 nu=0.3] %llu collisions, %llu events (%llu annulled), max |dE/E| %.2e, "
+        "max |P|/sqrt(NmT) %.2e, min pair distance/(2a) %.15f (10 O(N^2) checks), %.1f s\n",
+        (unsigned long long)e.stats().collisions, (unsigned long long)e.stats().events,
+        (unsigned long long)e.stats().annulled, worstEnergy, worstMomentum, worstGap, seconds);
     EXPECT_EQ(e.stats().collisions, 1000000u);
     // Round-off: each collision rule is exact to ~1e-16 of the pair's energy and momentum, so a
     // random walk over 1e6 collisions stays near 1e-14 relative (measured ~1e-13 and ~1e-16). The
@@ -166,9 +173,9 @@ TEST(EdmdValidation, ElasticGasConservesEnergyAndMomentumWithoutOverlap) {
 // AT-8 / spec 4.5: P V/(N T) - 1 against Henderson (2D) and Carnahan-Starling (3D), and against the
 // best reference EOS (virial series with exact B2..B10 for disks, Kolafa's CS correction for spheres).
 // Measured (N = 4096, 3e6 collisions each; statistical error ~0.1 %): 2D 0.3 -0.01 % vs
-// Henderson; 2D 0.5 -0.8 % vs Henderson, -0.2 % vs virial (+0.03 % with another seed); 2D 0.6 -1.3 % vs Henderson, +0.07 %
-// vs virial; 3D 0.3 +0.33 % vs CS, -0.02 % vs Kolafa; 3D 0.45 +0.20 % vs CS, -0.02 % vs Kolafa.
-// Henderson is itself ~1.2 % high at nu = 0.6 (its higher virial coefficients are too large), so that
+// Henderson; 2D 0.5 -0.8 % vs Henderson, -0.2 % vs virial (+0.03 % with another seed); 2D 0.6 -1.3 % vs
+// Henderson, +0.07 % vs virial; 3D 0.3 +0.33 % vs CS, -0.02 % vs Kolafa; 3D 0.45 +0.20 % vs CS, -0.02 % vs
+// Kolafa. Henderson is itself ~1.2 % high at nu = 0.6 (its higher virial coefficients are too large), so that
 // case is asserted against the virial reference (1 %), and Henderson's error there is printed.
 TEST(EdmdValidation, EquationOfStateMatchesHendersonAndCarnahanStarling) {
     const std::pair<int, Real> cases[] = {{2, 0.3}, {2, 0.5}, {2, 0.6}, {3, 0.3}, {3, 0.45}};
@@ -177,16 +184,19 @@ TEST(EdmdValidation, EquationOfStateMatchesHendersonAndCarnahanStarling) {
         const Real theory = kt::reducedPressure(dim, nu);
         const Real reference = referenceReducedPressure(dim, nu);
         const Real rel = r.pRed.mean / theory - 1, relRef = r.pRed.mean / reference - 1;
-        std::printf("[EOS %dD N=%llu nu=%.2f] P_red %.5f +- %.5f (stat %.3f %%); %s %.5f: %+.3f %%; %s %.5f: %+.3f %%; "
-                    "half-run drift %+.1f sigma; %llu collisions, %.1f s\n",
-                    dim, (unsigned long long)r.n, nu, r.pRed.mean, r.pRed.error, 100 * r.pRed.error / r.pRed.mean,
-                    dim == 2 ? "Henderson" : "Carnahan-Starling", theory, 100 * rel,
-                    dim == 2 ? "virial B2..B10" : "Kolafa", reference, 100 * relRef, r.drift,
-                    (unsigned long long)r.collisions, r.seconds);
+        std::printf(
+            "[EOS %dD N=%llu nu=%.2f] P_red %.5f +- %.5f (stat %.3f %%); %s %.5f: %+.3f %%; %s %.5f: %+.3f "
+            "%%; "
+            "half-run drift %+.1f sigma; %llu collisions, %.1f s\n",
+            dim, (unsigned long long)r.n, nu, r.pRed.mean, r.pRed.error, 100 * r.pRed.error / r.pRed.mean,
+            dim == 2 ? "Henderson" : "Carnahan-Starling", theory, 100 * rel,
+            dim == 2 ? "virial B2..B10" : "Kolafa", reference, 100 * relRef, r.drift,
+            (unsigned long long)r.collisions, r.seconds);
         EXPECT_LT(r.pRed.error / r.pRed.mean, 0.003) << "statistics too poor for a 1 % test";
         EXPECT_LT(std::abs(r.drift), 4) << "not equilibrated: the two halves of the run differ";
         if (dim == 2 && nu > 0.55)
-            EXPECT_LT(std::abs(relRef), 0.01) << "Henderson is off by itself here; the reference is the virial series";
+            EXPECT_LT(std::abs(relRef), 0.01)
+                << "Henderson is off by itself here; the reference is the virial series";
         else
             EXPECT_LT(std::abs(rel), 0.01) << dim << "D nu " << nu;
         // The accurate references allow a much tighter check (stat error < 0.1 %, finite size ~0.1 %).
@@ -204,12 +214,13 @@ TEST(EdmdValidation, CollisionFrequencyMatchesEnskogWithMeasuredContactValue) {
         const EosRun& r = eosRun(dim, nu);
         const Real gMeasured = r.pRed.mean / (std::pow(2.0, dim - 1) * nu);
         const Real fAnalytic = kt::enskogCollisionFrequency(dim, nu, 1, 1, 1);
-        std::printf("[f_E %dD N=%llu nu=%.2f] f %.5f +- %.5f; g from P %.5f (%s %.5f); Enskog with measured g %.5f; "
-                    "f/f_E(g measured) - 1 = %+.3f %% +- %.3f %%; f/f_E(analytic g) - 1 = %+.3f %%\n",
-                    dim, (unsigned long long)r.n, nu, r.freq.mean, r.freq.error, gMeasured,
-                    dim == 2 ? "Henderson" : "CS", kt::contactValue(dim, nu),
-                    fAnalytic * gMeasured / kt::contactValue(dim, nu), 100 * (r.freqOverEnskog.mean - 1),
-                    100 * r.freqOverEnskog.error, 100 * (r.freq.mean / fAnalytic - 1));
+        std::printf(
+            "[f_E %dD N=%llu nu=%.2f] f %.5f +- %.5f; g from P %.5f (%s %.5f); Enskog with measured g %.5f; "
+            "f/f_E(g measured) - 1 = %+.3f %% +- %.3f %%; f/f_E(analytic g) - 1 = %+.3f %%\n",
+            dim, (unsigned long long)r.n, nu, r.freq.mean, r.freq.error, gMeasured,
+            dim == 2 ? "Henderson" : "CS", kt::contactValue(dim, nu),
+            fAnalytic * gMeasured / kt::contactValue(dim, nu), 100 * (r.freqOverEnskog.mean - 1),
+            100 * r.freqOverEnskog.error, 100 * (r.freq.mean / fAnalytic - 1));
         EXPECT_LT(r.freqOverEnskog.error, 0.003);
         EXPECT_LT(std::abs(r.freqOverEnskog.mean - 1), 0.01) << dim << "D nu " << nu;
     }
@@ -227,11 +238,12 @@ TEST(EdmdValidation, SpecKineticNumbersAtQuarterFilling) {
     for (const Case c : {Case{2, 0.8933, 0.7917}, Case{3, 3.5105, 2.0741}}) {
         const EosRun& r = eosRun(c.dim, 0.25, 2000000);
         const Real T = 1;  // makeInitialState sets exactly T0 = 1; elastic runs keep it
-        std::printf("[nu=0.25 %dD N=%llu] f %.5f +- %.5f vs spec %.4f (%+.2f %%); P_red %.5f +- %.5f vs spec %.4f "
-                    "(%+.2f %%); kinetic_theory: f_E %.5f, P_red %.5f; %.1f s\n",
-                    c.dim, (unsigned long long)r.n, r.freq.mean, r.freq.error, c.fE, 100 * (r.freq.mean / c.fE - 1),
-                    r.pRed.mean, r.pRed.error, c.pRed, 100 * (r.pRed.mean / c.pRed - 1),
-                    kt::enskogCollisionFrequency(c.dim, 0.25, T, 1, 1), kt::reducedPressure(c.dim, 0.25), r.seconds);
+        std::printf(
+            "[nu=0.25 %dD N=%llu] f %.5f +- %.5f vs spec %.4f (%+.2f %%); P_red %.5f +- %.5f vs spec %.4f "
+            "(%+.2f %%); kinetic_theory: f_E %.5f, P_red %.5f; %.1f s\n",
+            c.dim, (unsigned long long)r.n, r.freq.mean, r.freq.error, c.fE, 100 * (r.freq.mean / c.fE - 1),
+            r.pRed.mean, r.pRed.error, c.pRed, 100 * (r.pRed.mean / c.pRed - 1),
+            kt::enskogCollisionFrequency(c.dim, 0.25, T, 1, 1), kt::reducedPressure(c.dim, 0.25), r.seconds);
         EXPECT_NEAR(kt::enskogCollisionFrequency(c.dim, 0.25, T, 1, 1), c.fE, 1e-4);
         EXPECT_NEAR(kt::reducedPressure(c.dim, 0.25), c.pRed, 1e-4);
         EXPECT_LT(std::abs(r.freq.mean / c.fE - 1), 0.015);

@@ -28,7 +28,8 @@ std::vector<Vec2> regular(int n, Real r, Real phase = 0) {
 std::vector<Vec2> randomConvex(CounterRng& rng, int n, Real a, Real b) {
     for (;;) {
         std::vector<Real> ang(static_cast<std::size_t>(n));
-        for (int k = 0; k < n; ++k) ang[static_cast<std::size_t>(k)] = rng.uniform((k - 0.5) * 2 * kPi / n, (k + 0.5) * 2 * kPi / n);
+        for (int k = 0; k < n; ++k)
+            ang[static_cast<std::size_t>(k)] = rng.uniform((k - 0.5) * 2 * kPi / n, (k + 0.5) * 2 * kPi / n);
         std::vector<Vec2> p;
         for (Real t : ang) p.push_back({a * std::cos(t), b * std::sin(t)});
         if (checkConvexPolygon(p).ok()) {
@@ -100,7 +101,8 @@ TEST(ConvexContact, TrackedEqualsClippingAlongRandomTrajectories) {
     FeatureStats stats;
     std::uint64_t touchingSteps = 0;
     for (int trial = 0; trial < 60; ++trial) {
-        const int na = 3 + static_cast<int>(rng.uniform() * 20), nb = 3 + static_cast<int>(rng.uniform() * 20);
+        const int na = 3 + static_cast<int>(rng.uniform() * 20),
+                  nb = 3 + static_cast<int>(rng.uniform() * 20);
         const auto pa = randomConvex(rng, na, 1.0, rng.uniform(0.3, 1.0));
         const auto pb = randomConvex(rng, nb, rng.uniform(0.5, 1.5), rng.uniform(0.3, 1.0));
         // A approaches B, rotates, presses in slightly and leaves again.
@@ -121,9 +123,10 @@ TEST(ConvexContact, TrackedEqualsClippingAlongRandomTrajectories) {
         }
     }
     EXPECT_GT(touchingSteps, 1000u);
-    std::printf("feature tests per evaluation %.3f, cold starts %llu, full clips %llu over %llu evaluations\n",
-                double(stats.iterations) / double(stats.evaluations), (unsigned long long)stats.coldStarts,
-                (unsigned long long)stats.fullClips, (unsigned long long)stats.evaluations);
+    std::printf(
+        "feature tests per evaluation %.3f, cold starts %llu, full clips %llu over %llu evaluations\n",
+        double(stats.iterations) / double(stats.evaluations), (unsigned long long)stats.coldStarts,
+        (unsigned long long)stats.fullClips, (unsigned long long)stats.evaluations);
 }
 
 TEST(ConvexContact, PersistentContactCostIndependentOfCornerCount) {
@@ -136,7 +139,8 @@ TEST(ConvexContact, PersistentContactCostIndependentOfCornerCount) {
         const int steps = 5000;
         for (int s = 0; s < steps; ++s) {
             const Real ang = -0.002 * s;  // rolling to the right
-            const auto A = frame(disk, {0.002 * s, std::cos(kPi / n) - 1e-3}, ang), B = frame(floor, {0, -5}, 0);
+            const auto A = frame(disk, {0.002 * s, std::cos(kPi / n) - 1e-3}, ang),
+                       B = frame(floor, {0, -5}, 0);
             const auto got = trackPolygonContact(A, B, cache, stats);
             ASSERT_TRUE(got.touching) << n << " step " << s;
         }

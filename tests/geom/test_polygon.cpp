@@ -13,7 +13,9 @@ using namespace granulab;
 using namespace granulab::geom;
 
 namespace {
-std::vector<Vec2> rect(Real x0, Real y0, Real x1, Real y1) { return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; }
+std::vector<Vec2> rect(Real x0, Real y0, Real x1, Real y1) {
+    return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+}
 
 std::vector<Vec2> regular(int n, Real r, Vec2 c, Real phase) {
     std::vector<Vec2> p;
@@ -37,7 +39,7 @@ TEST(Polygon, MassProperties) {
     EXPECT_DOUBLE_EQ(sq.area, 2.0);
     EXPECT_DOUBLE_EQ(sq.centroid.x, 1.0);
     EXPECT_DOUBLE_EQ(sq.centroid.y, 0.5);
-    EXPECT_NEAR(sq.secondMoment, 2.0 * (4.0 + 1.0) / 12.0, 1e-15);  // A (a^2 + b^2) / 12
+    EXPECT_NEAR(sq.secondMoment, 2.0 * (4.0 + 1.0) / 12.0, 1e-15);    // A (a^2 + b^2) / 12
     const auto disk = polygonMass(regular(4096, 1.0, {3, -2}, 0.1));  // tends to pi r^4 / 2
     EXPECT_NEAR(disk.area, kPi, 1e-5);
     EXPECT_NEAR(disk.secondMoment, kPi / 2, 1e-5);
@@ -69,7 +71,7 @@ TEST(Polygon, OverlapOfTwoSquaresIsExact) {
     const bool order = norm(o.c1 - a) < norm(o.c1 - b);
     EXPECT_NEAR(norm((order ? o.c1 : o.c2) - a), 0, 1e-12);
     EXPECT_NEAR(norm((order ? o.c2 : o.c1) - b), 0, 1e-12);
-    EXPECT_NEAR(dot(o.normal, b - a), 0, 1e-12);  // perpendicular to the contact line
+    EXPECT_NEAR(dot(o.normal, b - a), 0, 1e-12);               // perpendicular to the contact line
     EXPECT_GT(dot(o.normal, Vec2{1, 1} - Vec2{2, 1.5}), 0.0);  // pushes i away from j
     EXPECT_FALSE(convexOverlap(rect(0, 0, 1, 1), rect(2, 0, 3, 1)).overlapping);
 }
@@ -79,13 +81,15 @@ TEST(Polygon, OverlapIsSymmetricAndInvariantUnderRigidMotions) {
     for (int trial = 0; trial < 200; ++trial) {
         const int ni = 3 + trial % 9, nj = 3 + (trial / 3) % 9;
         const auto pi = regular(ni, rng.uniform(0.5, 1.5), {0, 0}, rng.uniform(0, 6.3));
-        const auto pj = regular(nj, rng.uniform(0.5, 1.5), {rng.uniform(0.5, 2.0), rng.uniform(-0.5, 0.5)}, rng.uniform(0, 6.3));
+        const auto pj = regular(nj, rng.uniform(0.5, 1.5), {rng.uniform(0.5, 2.0), rng.uniform(-0.5, 0.5)},
+                                rng.uniform(0, 6.3));
         const auto o = convexOverlap(pi, pj);
         if (!o.overlapping) continue;
         const auto swapped = convexOverlap(pj, pi);
         EXPECT_NEAR(swapped.area / o.area, 1.0, 1e-12);
-        EXPECT_NEAR(norm(swapped.point - o.point), 0, 1e-9) << "crossings " << o.crossings << " / " << swapped.crossings
-                                                             << " n " << ni << " " << nj << " area " << o.area;
+        EXPECT_NEAR(norm(swapped.point - o.point), 0, 1e-9)
+            << "crossings " << o.crossings << " / " << swapped.crossings << " n " << ni << " " << nj
+            << " area " << o.area;
         EXPECT_NEAR(dot(swapped.normal, o.normal), -1.0, 1e-9);  // opposite bodies, opposite push
         const Real angle = rng.uniform(0, 6.3);
         const Vec2 shift{rng.uniform(-100, 100), rng.uniform(-100, 100)};

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Output of polygon particles (issue 4): VTK snapshots (polygon cells with the world corners,
 // per-particle cell data) read back through io/vtk_reader, final.csv shape and corners columns.
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -11,8 +13,6 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "../support.hpp"
 #include "io/csv_writers.hpp"
@@ -119,7 +119,8 @@ std::vector<T> appendedArray(const std::string& text, const std::string& section
     if (sec == std::string::npos) throw std::runtime_error("no section " + section);
     const auto secEnd = text.find("</" + section, sec);
     const auto at = text.find("Name=\"" + name + "\"", sec);
-    if (at == std::string::npos || at > secEnd) throw std::runtime_error("no array " + name + " in " + section);
+    if (at == std::string::npos || at > secEnd)
+        throw std::runtime_error("no array " + name + " in " + section);
     const auto off = text.find("offset=\"", at) + 8;
     const std::size_t offset = std::stoull(text.substr(off, text.find('"', off) - off));
     const std::size_t data = text.find('_', text.find("<AppendedData")) + 1 + offset;
@@ -141,7 +142,8 @@ TEST(PolygonOutput, SnapshotRoundTripsWorldCorners) {
     writeSnapshot(scratch.path.string(), 0, s, pool, world.walls(), 0.125, pvd);
     const fs::path file = scratch.path / "vtk" / "particles_000000.vtp";
     ASSERT_TRUE(fs::exists(file));
-    ASSERT_EQ(readPvd((scratch.path / "snapshots.pvd").string()).size(), 2u);  // particles and walls, as before
+    ASSERT_EQ(readPvd((scratch.path / "snapshots.pvd").string()).size(),
+              2u);  // particles and walls, as before
 
     const ParticleFrame f = readParticlesVtp(file.string());
     EXPECT_EQ(f.time, 0.125);
@@ -177,7 +179,8 @@ TEST(PolygonOutput, SnapshotRoundTripsWorldCorners) {
         // counter-clockwise in the world (positive signed area)
         double area2 = 0;
         for (std::size_t c = 0; c < want.size(); ++c) {
-            const Vec2 a = f.corners[f.cornerStart[p] + c], b = f.corners[f.cornerStart[p] + (c + 1) % want.size()];
+            const Vec2 a = f.corners[f.cornerStart[p] + c],
+                       b = f.corners[f.cornerStart[p] + (c + 1) % want.size()];
             area2 += a.x * b.y - a.y * b.x;
         }
         EXPECT_GT(area2, 0);
@@ -305,8 +308,8 @@ TEST(PolygonOutput, FinalCsvNamesShapesAndCountsCorners) {
     std::vector<std::string> header;
     const auto rows = readCsv(path, header);
     // Old columns first and in order, the new one appended.
-    const std::vector<std::string> want = {"id", "shape", "x", "y", "vx", "vy", "angle", "omega",
-                                           "radius", "mass", "material", "corners"};
+    const std::vector<std::string> want = {"id",    "shape", "x",      "y",    "vx",       "vy",
+                                           "angle", "omega", "radius", "mass", "material", "corners"};
     EXPECT_EQ(header, want);
     ASSERT_EQ(rows.size(), 5u);
     const std::vector<std::pair<std::string, std::string>> shapeAndCorners = {

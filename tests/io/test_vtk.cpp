@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: MIT
 // VTK writer/reader round trips (exact doubles), .pvd write/load/truncate, malformed input.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include <string>
-
-#include <gtest/gtest.h>
-#include <unistd.h>
 
 #include "../support.hpp"
 #include "io/vtk_reader.hpp"

@@ -8,8 +8,8 @@
 #include <cmath>
 #include <set>
 
-#include "geom/polygon.hpp"
 #include "dem/generate.hpp"
+#include "geom/polygon.hpp"
 #include "model/grain_shapes.hpp"
 
 using namespace granulab;
@@ -73,8 +73,8 @@ TEST(GrainShapes, RectangleChamferAndEllipseAreas) {
     ASSERT_EQ(cut.size(), 8u);
     EXPECT_TRUE(geom::checkConvexPolygon(cut).ok());
     EXPECT_NEAR(geom::polygonMass(cut).area, 1.0 * (1 - 2 * c * c), 1e-15);  // four cut triangles
-    EXPECT_NEAR(norm(cut[1] - cut[0]), 2.0 * (1 - 2 * c), 1e-15);          // bottom edge a (1 - 2c)
-    EXPECT_NEAR(norm(cut[3] - cut[2]), 0.5 * (1 - 2 * c), 1e-15);          // right edge b (1 - 2c)
+    EXPECT_NEAR(norm(cut[1] - cut[0]), 2.0 * (1 - 2 * c), 1e-15);            // bottom edge a (1 - 2c)
+    EXPECT_NEAR(norm(cut[3] - cut[2]), 0.5 * (1 - 2 * c), 1e-15);            // right edge b (1 - 2c)
     // The ellipse polygon is the affine image of the regular one: area N/2 a b sin(2 pi / N).
     const auto e = ellipsePolygon(0.3, 0.1, 10);
     EXPECT_NEAR(geom::polygonMass(e).area, 5 * 0.3 * 0.1 * std::sin(2 * kPi / 10), 1e-15);
@@ -139,7 +139,8 @@ TEST(GrainShapes, Rand1AnglesStayInTheirWindowsAndRand2DoesNot) {
     EXPECT_GT(broken, 100);
     d.cornerAngles = std::string("regular");
     const Grain g = randomGrain(d, rng);
-    for (std::size_t i = 0; i < g.angles.size(); ++i) EXPECT_NEAR(g.angles[i], static_cast<Real>(i) * 2 * kPi / 6, 1e-15);
+    for (std::size_t i = 0; i < g.angles.size(); ++i)
+        EXPECT_NEAR(g.angles[i], static_cast<Real>(i) * 2 * kPi / 6, 1e-15);
 }
 
 TEST(GrainShapes, SpecialTruncatedGaussianAndGaussModes) {
@@ -206,7 +207,8 @@ TEST(GrainShapes, SpecialRectangleAndFullAxes) {
     const Grain g = randomGrain(d, rng);
     ASSERT_EQ(g.corners.size(), 8u);
     EXPECT_EQ(g.semiAxes, (Vec2{0.5, 0.2}));
-    EXPECT_NEAR(geom::polygonMass(g.corners).area, 0.4 * (1 - 2 * kSpecialRectangleChamfer * kSpecialRectangleChamfer), 1e-15);
+    EXPECT_NEAR(geom::polygonMass(g.corners).area,
+                0.4 * (1 - 2 * kSpecialRectangleChamfer * kSpecialRectangleChamfer), 1e-15);
     EXPECT_NEAR(maxPlacementRadius(d), std::hypot(0.5, 0.2 * (1 - 2 * kSpecialRectangleChamfer)), 1e-15);
     d.cornerAngles = std::string("rand1");
     d.sizeMode = std::string("equal");
@@ -302,7 +304,7 @@ TEST(GrainGeneration, NamedShapesShareOneEntryGrainsGetOneEach) {
             ++grains;
         }
     }
-    EXPECT_EQ(hexes, 1u + 49u);        // the explicit particle and a 7 x 7 square lattice
+    EXPECT_EQ(hexes, 1u + 49u);             // the explicit particle and a 7 x 7 square lattice
     EXPECT_EQ(grainShapes.size(), grains);  // one pool entry per grain
     EXPECT_EQ(g.shapes.size(), 1u + grains);
     EXPECT_EQ(g.particles[0].angle, 0.25);  // const rotation 0 plus the particle's own angle
@@ -316,10 +318,12 @@ TEST(GrainGeneration, NamedShapesShareOneEntryGrainsGetOneEach) {
         const auto& q = g.particles[k];
         const long row = std::lround((q.position.y - 0.15) / dy);
         const Real shift = row % 2 ? 0.15 : 0.0;
-        const Vec2 site{0.15 + shift + 0.3 * std::round((q.position.x - 0.15 - shift) / 0.3), 0.15 + dy * static_cast<Real>(row)};
+        const Vec2 site{0.15 + shift + 0.3 * std::round((q.position.x - 0.15 - shift) / 0.3),
+                        0.15 + dy * static_cast<Real>(row)};
         const Real c = std::cos(q.angle), sn = std::sin(q.angle);
         for (const Vec2 v : g.shapes.shapeCorners(q.shape))
-            EXPECT_LE(norm(q.position + Vec2{c * v.x - sn * v.y, sn * v.x + c * v.y} - site), 0.13 + 1e-12) << k;
+            EXPECT_LE(norm(q.position + Vec2{c * v.x - sn * v.y, sn * v.x + c * v.y} - site), 0.13 + 1e-12)
+                << k;
         offCentre = offCentre || norm(q.position - site) > 1e-6;
     }
     EXPECT_TRUE(offCentre);  // random angles move the centroid off the ellipse centre

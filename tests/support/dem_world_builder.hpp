@@ -32,8 +32,8 @@ public:
         return *this;
     }
     /// A law between materials a and b ("*" matches any); `params` by scene key (kn, e, mu, ...).
-    DemSceneBuilder& contact(const std::string& a, const std::string& b, const std::string& normal, const std::string& damping,
-                             const std::map<std::string, Real>& params) {
+    DemSceneBuilder& contact(const std::string& a, const std::string& b, const std::string& normal,
+                             const std::string& damping, const std::map<std::string, Real>& params) {
         model::ContactDef c;
         c.materialA = a;
         c.materialB = b;

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 // `granulab info` of a dem scene: integrator, particles, materials, contact laws, contact time,
 // advised time step (cfddem spec section 3.5, gc2d Eq. 2.9) and a memory estimate.
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "app/dem/dem_engine.hpp"
 #include "dem/setup.hpp"
@@ -19,16 +20,16 @@ int demInfo(const std::string& scenePath, const model::SceneDef& scene) {
     const auto& ps = v.initial.particles;
     fmt::print("scene        {}\n", scenePath);
     if (!scene.run.title.empty()) fmt::print("title        {}\n", scene.run.title);
-    fmt::print("engine       {} ({}D), integrator {}, broad phase {}\n", scene.run.engine, scene.run.dimension,
-               dem::integratorOf(scene), dem::broadPhaseOf(scene));
+    fmt::print("engine       {} ({}D), integrator {}, broad phase {}\n", scene.run.engine,
+               scene.run.dimension, dem::integratorOf(scene), dem::broadPhaseOf(scene));
     const char* kind = scene.dem.massModel == "sphere" ? "spheres (moving in the plane)" : "disks";
     std::size_t polygons = 0;
     for (const auto& p : ps) polygons += p.shape != model::kDiskShape;
     if (polygons == 0)
         fmt::print("particles    {} {}\n", ps.size(), kind);
     else
-        fmt::print("particles    {} ({} polygons, {} {}), {} shapes\n", ps.size(), polygons, ps.size() - polygons, kind,
-                   v.initial.shapes.size());
+        fmt::print("particles    {} ({} polygons, {} {}), {} shapes\n", ps.size(), polygons,
+                   ps.size() - polygons, kind, v.initial.shapes.size());
     for (std::size_t m = 0; m < names.size(); ++m) {
         std::size_t count = 0;
         Real rmin = 1e300, rmax = 0, mass = 0;
@@ -37,12 +38,15 @@ int demInfo(const std::string& scenePath, const model::SceneDef& scene) {
                 ++count;
                 rmin = std::min(rmin, p.radius);
                 rmax = std::max(rmax, p.radius);
-                mass += dem::initialMass(v.initial, p, model::massModelOf(scene.dem.massModel), scene.materials[m].density);
+                mass += dem::initialMass(v.initial, p, model::massModelOf(scene.dem.massModel),
+                                         scene.materials[m].density);
             }
         if (count)
-            fmt::print("  material {:<12} {:>9} particles, radius {:.4g}..{:.4g} m{}, density {:.4g} kg/m^{}, total mass {:.4g} kg\n",
-                       names[m], count, rmin, rmax, polygons ? " (polygons: circumradius)" : "", scene.materials[m].density,
-                       scene.dem.massModel == "sphere" ? 3 : 2, mass);
+            fmt::print(
+                "  material {:<12} {:>9} particles, radius {:.4g}..{:.4g} m{}, density {:.4g} kg/m^{}, total "
+                "mass {:.4g} kg\n",
+                names[m], count, rmin, rmax, polygons ? " (polygons: circumradius)" : "",
+                scene.materials[m].density, scene.dem.massModel == "sphere" ? 3 : 2, mass);
         else
             fmt::print("  material {:<12} (walls only)\n", names[m]);
     }
@@ -51,23 +55,29 @@ int demInfo(const std::string& scenePath, const model::SceneDef& scene) {
     fmt::print("walls        {} ({} segments)\n", scene.walls.size(), segments);
     fmt::print("contact laws {}\n", scene.contacts.size());
     for (const auto& c : scene.contacts)
-        fmt::print("  {}/{}: normal {}, damping {}, tangential {}, rolling {}\n", c.materialA, c.materialB, c.normal,
-                   c.damping, c.tangential, c.rolling);
+        fmt::print("  {}/{}: normal {}, damping {}, tangential {}, rolling {}\n", c.materialA, c.materialB,
+                   c.normal, c.damping, c.tangential, c.rolling);
     fmt::print("time step    dt = {:.4g} s, end time {:.6g} s, {} steps\n", scene.dem.dt, scene.run.endTime,
                static_cast<long long>(dem::stepsIn(scene.run.endTime, scene.dem.dt)));
     if (v.advice.contactTime > 0) {
-        fmt::print("contact time {:.4g} s ({}, impact at {:.3g} m/s for nonlinear laws), {:.1f} steps per contact\n",
-                   v.advice.contactTime, v.advice.pair, v.impactSpeed, v.advice.contactTime / scene.dem.dt);
-        fmt::print("advised dt   {:.4g} s (contact time / 50, at most stability limit / 10); stability limit {:.4g} s\n",
-                   v.advice.advisedDt, v.advice.stabilityLimit);
+        fmt::print(
+            "contact time {:.4g} s ({}, impact at {:.3g} m/s for nonlinear laws), {:.1f} steps per contact\n",
+            v.advice.contactTime, v.advice.pair, v.impactSpeed, v.advice.contactTime / scene.dem.dt);
+        fmt::print(
+            "advised dt   {:.4g} s (contact time / 50, at most stability limit / 10); stability limit {:.4g} "
+            "s\n",
+            v.advice.advisedDt, v.advice.stabilityLimit);
     }
     if (v.advice.areaAdvisedDt > 0)
-        fmt::print("area law dt  {:.4g} s by the gc2d rule (pi/10) sqrt(m/E) of the {} contact, lightest particle; "
-                   "an upper bound: confirm with a smaller dt\n",
-                   v.advice.areaAdvisedDt, v.advice.areaPair);
+        fmt::print(
+            "area law dt  {:.4g} s by the gc2d rule (pi/10) sqrt(m/E) of the {} contact, lightest particle; "
+            "an upper bound: confirm with a smaller dt\n",
+            v.advice.areaAdvisedDt, v.advice.areaPair);
     if (v.advice.faceAdvisedDt > 0)
-        fmt::print("face dt      {:.4g} s with the flat-face stiffness E L_max/(r_in/2) of {}: advised for polygons\n",
-                   v.advice.faceAdvisedDt, v.advice.faceParticle);
+        fmt::print(
+            "face dt      {:.4g} s with the flat-face stiffness E L_max/(r_in/2) of {}: advised for "
+            "polygons\n",
+            v.advice.faceAdvisedDt, v.advice.faceParticle);
     // Estimate: particle store + Verlet half-step velocities (24 B) + neighbour-list reference
     // positions (16 B) + cell grid (12 B) + ~3 candidate pairs per disk (16 B each, history included).
     double perParticle = static_cast<double>(model::ParticleStore::kBytesPerParticle) + 24 + 16 + 12 + 3 * 16;
@@ -75,10 +85,13 @@ int demInfo(const std::string& scenePath, const model::SceneDef& scene) {
         std::size_t corners = 0;
         for (const auto& p : ps)
             if (p.shape != model::kDiskShape) corners += v.initial.shapes.count[p.shape];
-        perParticle += 15 * 8 + 16.0 * static_cast<double>(corners) / static_cast<double>(ps.size()) + 4 + 3 * 18;
+        perParticle +=
+            15 * 8 + 16.0 * static_cast<double>(corners) / static_cast<double>(ps.size()) + 4 + 3 * 18;
     }
-    fmt::print("memory       ~{:.3g} MB ({:.0f} bytes per particle, estimate; summary.json reports the measured value)\n",
-               perParticle * static_cast<double>(ps.size()) / 1e6, perParticle);
+    fmt::print(
+        "memory       ~{:.3g} MB ({:.0f} bytes per particle, estimate; summary.json reports the measured "
+        "value)\n",
+        perParticle * static_cast<double>(ps.size()) / 1e6, perParticle);
     for (const auto& w : v.warnings) fmt::print("warning      {}\n", w);
     return 0;
 }

@@ -3,9 +3,10 @@
 // steps of World::step() between output stops, every output period converted to whole steps
 // (dem/step_clock.hpp), series.csv energies and contact counts, VTK snapshots of particles and
 // walls, final.csv of the particle store, the World's checkpoint state.
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "app/dem/dem_engine.hpp"
 #include "app/simulation_options.hpp"
@@ -23,8 +24,11 @@ namespace {
 class DemSimulation final : public Simulation {
 public:
     DemSimulation(const model::SceneDef& scene, dem::PreparedScene prepared, const SimulationOptions& options)
-        : m_scene(scene), m_options(options), m_warnings(std::move(prepared.warnings)),
-          m_world(dem::makeWorld(scene, prepared.initial)), m_dt(scene.dem.dt),
+        : m_scene(scene),
+          m_options(options),
+          m_warnings(std::move(prepared.warnings)),
+          m_world(dem::makeWorld(scene, prepared.initial)),
+          m_dt(scene.dem.dt),
           m_endStep(dem::stepsIn(scene.run.endTime, scene.dem.dt)) {}
 
     std::string engine() const override { return "dem"; }
@@ -36,7 +40,8 @@ public:
     std::vector<std::string> warnings() const override {
         std::vector<std::string> w = m_warnings;
         if (m_guardSkips > 0)
-            w.push_back(fmt::format("overlap guard skipped {} particle-pair contact evaluations", m_guardSkips));
+            w.push_back(
+                fmt::format("overlap guard skipped {} particle-pair contact evaluations", m_guardSkips));
         return w;
     }
 
@@ -48,16 +53,24 @@ public:
         };
         const std::int64_t endStep = m_endStep;
         RunPlan p;
-        p.end = {U::Count, true, [endStep](std::int64_t k) { return k == 1 ? static_cast<double>(endStep) : kInf; }, 0};
-        p.series = Schedule::periodic(U::Count, every(out.seriesInterval, std::max<std::int64_t>(1, m_endStep / 100)));
+        p.end = {U::Count, true,
+                 [endStep](std::int64_t k) { return k == 1 ? static_cast<double>(endStep) : kInf; }, 0};
+        p.series = Schedule::periodic(U::Count,
+                                      every(out.seriesInterval, std::max<std::int64_t>(1, m_endStep / 100)));
         p.snapshots = Schedule::periodic(U::Count, every(out.snapshotInterval, m_endStep));
         // Default: ten checkpoints over the run, so that a failing run keeps a recent good state.
-        p.checkpoints = Schedule::periodic(U::Count, every(out.checkpointInterval, std::max<std::int64_t>(1, m_endStep / 10)));
-        p.progress = Schedule::periodic(U::Count, static_cast<double>(std::max<std::int64_t>(64, m_endStep / 200)));
-        const std::int64_t benchStep = m_scene.run.benchmarkFrom >= 0 ? dem::stepsIn(m_scene.run.benchmarkFrom, m_dt) : -1;
-        p.benchmark = benchStep >= 0
-                          ? Schedule{U::Count, true, [benchStep](std::int64_t k) { return k == 1 ? static_cast<double>(benchStep) : kInf; }, 0}
-                          : Schedule::never();
+        p.checkpoints = Schedule::periodic(
+            U::Count, every(out.checkpointInterval, std::max<std::int64_t>(1, m_endStep / 10)));
+        p.progress =
+            Schedule::periodic(U::Count, static_cast<double>(std::max<std::int64_t>(64, m_endStep / 200)));
+        const std::int64_t benchStep =
+            m_scene.run.benchmarkFrom >= 0 ? dem::stepsIn(m_scene.run.benchmarkFrom, m_dt) : -1;
+        p.benchmark = benchStep >= 0 ? Schedule{U::Count, true,
+                                                [benchStep](std::int64_t k) {
+                                                    return k == 1 ? static_cast<double>(benchStep) : kInf;
+                                                },
+                                                0}
+                                     : Schedule::never();
         p.progressEnd = m_scene.run.endTime;
         return p;
     }
@@ -75,7 +88,8 @@ public:
             if (const auto skips = m_world.forceStats().guardSkips; skips > 0) {
                 if (m_guardSkips == 0 && !m_options.quiet)
                     fmt::print(stderr,
-                               "\nnote: overlap guard skipped {} contact(s) deeper than 1 % of the radius at t = {:.6g} s "
+                               "\nnote: overlap guard skipped {} contact(s) deeper than 1 % of the radius at "
+                               "t = {:.6g} s "
                                "(counted in summary.json)\n",
                                skips, m_world.time());
                 m_guardSkips += skips;
@@ -84,23 +98,29 @@ public:
         return kSimOk;
     }
 
-    std::uint32_t health() const override { return std::isfinite(m_lastEnergy.total()) ? kSimOk : kSimNonFinite; }
+    std::uint32_t health() const override {
+        return std::isfinite(m_lastEnergy.total()) ? kSimOk : kSimNonFinite;
+    }
 
     std::string diagnose(std::uint32_t status) const override {
         std::vector<std::string> why;
         if (status & kSimNonFinite) why.push_back("a particle position or velocity became NaN/infinite");
-        if (status & kSimUnstable) why.push_back("a particle moved more than half its radius in one step (tunnelling)");
+        if (status & kSimUnstable)
+            why.push_back("a particle moved more than half its radius in one step (tunnelling)");
         if (status & kSimOverlap)
             why.push_back(fmt::format("a contact overlap reached {:.3g} times the smaller radius",
                                       m_world.forceStats().maxRelativeOverlap));
-        std::string s = fmt::format("the run became unstable at t = {:.6g} s (step {}): ", m_world.time(), m_world.stepIndex());
+        std::string s = fmt::format("the run became unstable at t = {:.6g} s (step {}): ", m_world.time(),
+                                    m_world.stepIndex());
         for (std::size_t k = 0; k < why.size(); ++k) s += (k ? "; " : "") + why[k];
         s += ". Likely causes: ";
         if ((status & kSimOverlap) && m_guardSkips > 0)
-            s += "the overlap guard (dem.overlap_guard) skipped contacts deeper than 1 % of the radius, so particles "
+            s += "the overlap guard (dem.overlap_guard) skipped contacts deeper than 1 % of the radius, so "
+                 "particles "
                  "interpenetrated; switch the guard off or raise the stiffness";
         else if (status & kSimOverlap)
-            s += "contact stiffness too low for the impact speeds (overlap ~ v sqrt(meff/kn)); raise kn or lower the speeds";
+            s += "contact stiffness too low for the impact speeds (overlap ~ v sqrt(meff/kn)); raise kn or "
+                 "lower the speeds";
         else
             s += "time step too large for the contact stiffness (see `granulab info` for the advised dt), "
                  "or particles created overlapping";
@@ -108,9 +128,10 @@ public:
     }
 
     std::vector<std::string> seriesColumns() const override {
-        std::vector<std::string> c = {"time", "step", "kinetic_energy", "rotational_energy", "potential_energy",
-                                      "elastic_energy", "total_energy", "contacts", "wall_contacts",
-                                      "max_overlap_ratio", "neighbor_builds"};
+        std::vector<std::string> c = {
+            "time",           "step",         "kinetic_energy", "rotational_energy", "potential_energy",
+            "elastic_energy", "total_energy", "contacts",       "wall_contacts",     "max_overlap_ratio",
+            "neighbor_builds"};
         for (const auto& w : m_world.walls().walls) {
             c.push_back("wall_" + w.name + "_fx");
             c.push_back("wall_" + w.name + "_fy");
@@ -121,9 +142,16 @@ public:
     std::vector<double> seriesRow() override {
         const auto e = m_world.energies();
         const auto& st = m_world.forceStats();
-        std::vector<double> row = {m_world.time(), static_cast<double>(m_world.stepIndex()), e.kinetic, e.rotational,
-                                   e.potential, e.elastic, e.total(), static_cast<double>(st.contacts),
-                                   static_cast<double>(st.wallContacts), st.maxRelativeOverlap,
+        std::vector<double> row = {m_world.time(),
+                                   static_cast<double>(m_world.stepIndex()),
+                                   e.kinetic,
+                                   e.rotational,
+                                   e.potential,
+                                   e.elastic,
+                                   e.total(),
+                                   static_cast<double>(st.contacts),
+                                   static_cast<double>(st.wallContacts),
+                                   st.maxRelativeOverlap,
                                    static_cast<double>(m_world.neighbors().builds)};
         for (const auto& f : m_world.wallForce()) {
             row.push_back(f.x);
@@ -135,12 +163,13 @@ public:
 
     void snapshot(const std::string& dir, int index, io::PvdWriter& pvd) override {
         if (!m_scene.output.vtk) return;
-        io::writeSnapshot(dir, index, m_world.store(), m_world.shapes(), m_world.walls(), m_world.time(), pvd);
+        io::writeSnapshot(dir, index, m_world.store(), m_world.shapes(), m_world.walls(), m_world.time(),
+                          pvd);
     }
 
     void writeFinal(const std::string& dir) override {
-        io::writeFinalCsv(dir + "/final.csv", m_world.store(), m_world.shapes(), model::materialNames(m_scene),
-                          model::massModelOf(m_scene.dem.massModel));
+        io::writeFinalCsv(dir + "/final.csv", m_world.store(), m_world.shapes(),
+                          model::materialNames(m_scene), model::massModelOf(m_scene.dem.massModel));
     }
 
     nlohmann::json summaryKeys(const RunReport& report) const override {
@@ -174,12 +203,16 @@ public:
         js["overlap_guard_skips"] = m_guardSkips;
         nlohmann::json timers;
         for (std::size_t s = 0; s < static_cast<std::size_t>(dem::Stage::Count); ++s)
-            timers[dem::stageName(static_cast<dem::Stage>(s))] = m_world.timers().seconds(static_cast<dem::Stage>(s));
+            timers[dem::stageName(static_cast<dem::Stage>(s))] =
+                m_world.timers().seconds(static_cast<dem::Stage>(s));
         timers["output"] = report.outputSeconds;
         js["timers_s"] = timers;
         const auto e = m_world.energies();
-        js["energy"] = {{"kinetic", e.kinetic}, {"rotational", e.rotational}, {"potential", e.potential},
-                        {"elastic", e.elastic}, {"total", e.total()}};
+        js["energy"] = {{"kinetic", e.kinetic},
+                        {"rotational", e.rotational},
+                        {"potential", e.potential},
+                        {"elastic", e.elastic},
+                        {"total", e.total()}};
         const Vec2 p = m_world.momentum();
         js["momentum"] = {p.x, p.y};
         Real top = -1e300;
@@ -193,39 +226,49 @@ public:
         js["wall_forces"] = walls;
         if (report.benchmarkSeconds >= 0) {
             const double bw = report.benchmarkSeconds;
-            js["benchmark"] = {{"from_time", m_scene.run.benchmarkFrom},
-                               {"steps", report.benchmarkCount},
-                               {"wall_s", bw},
-                               {"particle_steps_per_s", bw > 0 ? n * static_cast<double>(report.benchmarkCount) / bw : 0.0}};
+            js["benchmark"] = {
+                {"from_time", m_scene.run.benchmarkFrom},
+                {"steps", report.benchmarkCount},
+                {"wall_s", bw},
+                {"particle_steps_per_s", bw > 0 ? n * static_cast<double>(report.benchmarkCount) / bw : 0.0}};
         }
         return js;
     }
 
     std::string banner(const std::string& dir) const override {
-        return fmt::format("granulab {}: {} particles, {} wall segments, dt = {:.4g} s, {} steps to t = {:.6g} s -> {}",
-                           kVersion, m_world.store().size(), m_world.walls().segments.size(), m_dt,
-                           m_endStep - m_world.stepIndex(), m_scene.run.endTime, dir);
+        return fmt::format(
+            "granulab {}: {} particles, {} wall segments, dt = {:.4g} s, {} steps to t = {:.6g} s -> {}",
+            kVersion, m_world.store().size(), m_world.walls().segments.size(), m_dt,
+            m_endStep - m_world.stepIndex(), m_scene.run.endTime, dir);
     }
 
     void printDone(const std::string& dir, const RunReport& report) const override {
         const std::int64_t steps = m_world.stepIndex() - m_loopStartStep;
         const double n = static_cast<double>(m_world.store().size());
-        fmt::print(stderr, "done: {} steps in {:.3g} s ({:.3g} particle-steps/s)\n", steps, report.loopSeconds,
+        fmt::print(stderr, "done: {} steps in {:.3g} s ({:.3g} particle-steps/s)\n", steps,
+                   report.loopSeconds,
                    report.loopSeconds > 0 ? n * static_cast<double>(steps) / report.loopSeconds : 0.0);
         if (!m_scene.output.vtk) {
-            fmt::print("results in {}/ : summary.json, series.csv, final.csv, checkpoint.bin (VTK output off)\n", dir);
+            fmt::print(
+                "results in {}/ : summary.json, series.csv, final.csv, checkpoint.bin (VTK output off)\n",
+                dir);
             return;
         }
-        fmt::print("results in {}/ : summary.json, series.csv, final.csv, snapshots.pvd, checkpoint.bin\n", dir);
+        fmt::print("results in {}/ : summary.json, series.csv, final.csv, snapshots.pvd, checkpoint.bin\n",
+                   dir);
         const bool polygons = m_world.shapes().size() > 0;
         const auto& shape = m_world.store().shape;
-        const bool disks = std::any_of(shape.begin(), shape.end(), [](std::uint32_t k) { return k == model::kDiskShape; });
+        const bool disks =
+            std::any_of(shape.begin(), shape.end(), [](std::uint32_t k) { return k == model::kDiskShape; });
         if (disks)
-            fmt::print("view in ParaView: paraview {}/snapshots.pvd  (disks: Glyph filter, type Sphere, scale array "
-                       "'radius', factor 2, glyph mode 'All Points'{})\n",
-                       dir, polygons ? "; polygons show as they are" : "");
+            fmt::print(
+                "view in ParaView: paraview {}/snapshots.pvd  (disks: Glyph filter, type Sphere, scale array "
+                "'radius', factor 2, glyph mode 'All Points'{})\n",
+                dir, polygons ? "; polygons show as they are" : "");
         else
-            fmt::print("view in ParaView: paraview {}/snapshots.pvd  (polygons show as cells; colour by 'speed')\n", dir);
+            fmt::print(
+                "view in ParaView: paraview {}/snapshots.pvd  (polygons show as cells; colour by 'speed')\n",
+                dir);
         fmt::print("pictures:         granulab render {} --png\n", dir);
     }
 
@@ -265,7 +308,8 @@ dem::PreparedScene checkAndPrepareDem(const model::SceneDef& scene) {
     return prepared;
 }
 
-std::unique_ptr<Simulation> makeDemSimulation(const model::SceneDef& scene, const SimulationOptions& options) {
+std::unique_ptr<Simulation> makeDemSimulation(const model::SceneDef& scene,
+                                              const SimulationOptions& options) {
     return std::make_unique<DemSimulation>(scene, checkAndPrepareDem(scene), options);
 }
 

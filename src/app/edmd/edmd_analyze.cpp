@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: MIT
 // `granulab analyze` of an edmd output folder (edmd spec 5.2): g(r) and its contact value, p(v),
 // local density quantiles, clusters and tau_p (edmd Eq. 5.15) of the final state.
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fmt/format.h>
 #include <fstream>
 #include <sstream>
 
@@ -78,7 +79,8 @@ int edmdAnalyze(const AnalyzeOptions& opt, const nlohmann::json& summary) {
     for (int d = 0; d < D; ++d) {
         cx[d] = column(header, axes[d]);
         cv[d] = column(header, std::string("v") + axes[d]);
-        if (cx[d] < 0 || cv[d] < 0) badInput(finalPath, fmt::format("missing column {} or v{}", axes[d], axes[d]));
+        if (cx[d] < 0 || cv[d] < 0)
+            badInput(finalPath, fmt::format("missing column {} or v{}", axes[d], axes[d]));
     }
     const int cr = column(header, "radius"), cm = column(header, "mass");
     if (cr < 0 || cm < 0) badInput(finalPath, "missing column radius or mass");
@@ -88,13 +90,15 @@ int edmdAnalyze(const AnalyzeOptions& opt, const nlohmann::json& summary) {
         if (line.empty()) continue;
         const auto cells = splitCsv(line);
         const std::string where = fmt::format("{}:{}", finalPath, lineNo);
-        if (cells.size() != header.size()) badInput(where, fmt::format("{} cells, the header has {}", cells.size(), header.size()));
+        if (cells.size() != header.size())
+            badInput(where, fmt::format("{} cells, the header has {}", cells.size(), header.size()));
         for (int d = 0; d < D; ++d) {
             double x = toNumber(cells[static_cast<std::size_t>(cx[d])], where);
             if (points.periodic[d]) x -= points.box[d] * std::floor(x / points.box[d]);
             points.x.push_back(std::clamp(x, 0.0, std::nextafter(points.box[d], 0.0)));
         }
-        for (int d = 0; d < D; ++d) points.v.push_back(toNumber(cells[static_cast<std::size_t>(cv[d])], where));
+        for (int d = 0; d < D; ++d)
+            points.v.push_back(toNumber(cells[static_cast<std::size_t>(cv[d])], where));
         points.radius.push_back(toNumber(cells[static_cast<std::size_t>(cr)], where));
         points.mass.push_back(toNumber(cells[static_cast<std::size_t>(cm)], where));
     }
@@ -112,9 +116,9 @@ int edmdAnalyze(const AnalyzeOptions& opt, const nlohmann::json& summary) {
     settings.rMaxRadii = opt.rMaxRadii;
     settings.grBins = static_cast<std::size_t>(opt.bins);
     settings.clusterDelta = opt.delta;
-    const double contact =
-        io::writeGasAnalysisFiles(opt.dir + "/analysis/final_{}.csv", points, dens, cs, settings, summary.value("sim_time", 0.0))
-            .gContact;
+    const double contact = io::writeGasAnalysisFiles(opt.dir + "/analysis/final_{}.csv", points, dens, cs,
+                                                     settings, summary.value("sim_time", 0.0))
+                               .gContact;
 
     // tau_p from the series (peak of M'_2 on a logarithmic tau axis, edmd Eq. 5.15).
     double tauP = std::nan("");
@@ -152,15 +156,23 @@ int edmdAnalyze(const AnalyzeOptions& opt, const nlohmann::json& summary) {
                          {"cluster_delta", opt.delta}};
     io::writeFileAtomically(opt.dir + "/analysis/final_summary.json", js.dump(2) + "\n");
     if (!opt.quiet) {
-        fmt::print("{}: {} {} at t = {:.6g}\n", opt.dir, n, D == 2 ? "disks" : "spheres", summary.value("sim_time", 0.0));
-        fmt::print("  temperature {:.6g}, velocity kurtosis {:.4f} (Gaussian 3)\n", vel.temperature, vel.pooled.kurtosis);
+        fmt::print("{}: {} {} at t = {:.6g}\n", opt.dir, n, D == 2 ? "disks" : "spheres",
+                   summary.value("sim_time", 0.0));
+        fmt::print("  temperature {:.6g}, velocity kurtosis {:.4f} (Gaussian 3)\n", vel.temperature,
+                   vel.pooled.kurtosis);
         fmt::print("  g(2a) {:.4f} (g(r) in analysis/final_gr.csv)\n", contact);
-        fmt::print("  local volume fraction quantiles 1/10/25/50/75/90/99 %: {:.3f}\n", fmt::join(dens.quantiles, " "));
-        fmt::print("  clusters (gap < {} d): {}, M1 {:.4g}, M2 {:.4g}, M'2 {:.4g}, largest {} (q_x = {:.4f})\n", opt.delta,
-                   cs.clusterCount, cs.moment[1], cs.moment[2], cs.reducedMoment[2], cs.largest, cs.largestFraction);
-        if (std::isfinite(tauP)) fmt::print("  tau_p (peak of M'_2 in series.csv) {:.4g}\n", tauP);
-        else fmt::print("  tau_p: M'_2 has no peak in series.csv yet (still rising at the last row)\n");
-        fmt::print("  files: {}/analysis/final_{{gr,velocity,density,clusters}}.csv, final_summary.json\n", opt.dir);
+        fmt::print("  local volume fraction quantiles 1/10/25/50/75/90/99 %: {:.3f}\n",
+                   fmt::join(dens.quantiles, " "));
+        fmt::print(
+            "  clusters (gap < {} d): {}, M1 {:.4g}, M2 {:.4g}, M'2 {:.4g}, largest {} (q_x = {:.4f})\n",
+            opt.delta, cs.clusterCount, cs.moment[1], cs.moment[2], cs.reducedMoment[2], cs.largest,
+            cs.largestFraction);
+        if (std::isfinite(tauP))
+            fmt::print("  tau_p (peak of M'_2 in series.csv) {:.4g}\n", tauP);
+        else
+            fmt::print("  tau_p: M'_2 has no peak in series.csv yet (still rising at the last row)\n");
+        fmt::print("  files: {}/analysis/final_{{gr,velocity,density,clusters}}.csv, final_summary.json\n",
+                   opt.dir);
     }
     return kExitOk;
 }

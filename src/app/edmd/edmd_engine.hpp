@@ -3,9 +3,8 @@
 // adapter, `granulab info` and `granulab analyze` (edmd spec sections 2, 4, 5).
 #pragma once
 #include <memory>
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "app/analyze.hpp"
 #include "app/simulation.hpp"
@@ -19,7 +18,8 @@ struct SimulationOptions;
 /// io::checkEdmdDef + edmd::resolveScene: every scene problem, as SceneError.
 edmd::Setup checkAndResolveEdmd(const model::SceneDef& scene);
 
-std::unique_ptr<Simulation> makeEdmdSimulation(const model::SceneDef& scene, const SimulationOptions& options);
+std::unique_ptr<Simulation> makeEdmdSimulation(const model::SceneDef& scene,
+                                               const SimulationOptions& options);
 
 /// `granulab info` of an edmd scene: the resolved set-up and the kinetic-theory scales and
 /// thresholds of edmd spec 4.3-4.6.

@@ -4,10 +4,11 @@
 // output times or collision counts (the engine extrapolates, the schedule is untouched),
 // series.csv with the gas measurements, VTK snapshots, analysis files, kinetic-theory reference
 // curves, the engine state for checkpoints. Engine<D, Queue> is chosen once, here.
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fmt/format.h>
 #include <limits>
 #include <optional>
 
@@ -81,24 +82,29 @@ public:
         p.benchmark = Schedule::never();
         if (m_setup.endCollisions == 0) {
             p.end = {U::Time, true, [endTime](std::int64_t k) { return k == 1 ? endTime : kInf; }, 0};
-            p.series = {U::Time, true, [this, endTime](std::int64_t k) { return std::min(rowTime(k), endTime); }, 0};
-            p.checkpoints = Schedule::periodic(U::Time, out.checkpointInterval > 0 ? out.checkpointInterval : endTime / 10);
+            p.series = {U::Time, true,
+                        [this, endTime](std::int64_t k) { return std::min(rowTime(k), endTime); }, 0};
+            p.checkpoints = Schedule::periodic(
+                U::Time, out.checkpointInterval > 0 ? out.checkpointInterval : endTime / 10);
             p.progressEnd = endTime;
             return p;
         }
         // Collision-count runs: rows at equal collision steps; time schedules fire at the first row after.
         const std::uint64_t endC = m_setup.endCollisions, points = static_cast<std::uint64_t>(E.seriesPoints);
         const auto rowTarget = [endC, points](std::int64_t k) {
-            return static_cast<double>(std::min<std::uint64_t>(endC, static_cast<std::uint64_t>(k) * endC / points));
+            return static_cast<double>(
+                std::min<std::uint64_t>(endC, static_cast<std::uint64_t>(k) * endC / points));
         };
-        p.end = {U::Count, true, [endC](std::int64_t k) { return k == 1 ? static_cast<double>(endC) : kInf; }, 0};
+        p.end = {U::Count, true, [endC](std::int64_t k) { return k == 1 ? static_cast<double>(endC) : kInf; },
+                 0};
         p.series = {U::Count, true, rowTarget, 0};
         p.snapshots.exact = false;
         if (out.checkpointInterval > 0) {
             p.checkpoints = Schedule::periodic(U::Time, out.checkpointInterval, false);
         } else {  // a checkpoint every tenth of the rows
             const std::int64_t every = std::max<std::int64_t>(1, E.seriesPoints / 10);
-            p.checkpoints = {U::Count, true, [rowTarget, every](std::int64_t k) { return rowTarget(k * every); }, 0};
+            p.checkpoints = {U::Count, true,
+                             [rowTarget, every](std::int64_t k) { return rowTarget(k * every); }, 0};
         }
         p.progressEnd = static_cast<double>(endC);
         p.progressByCount = true;
@@ -115,16 +121,18 @@ public:
             m_memory.equilibrationWall = wallSeconds() - t0;
         }
         m_engine.restartClock();
-        m_engine.setCollisionRules(m_setup.config.restitution, m_setup.config.wallRestitution, m_setup.config.tc);
+        m_engine.setCollisionRules(m_setup.config.restitution, m_setup.config.wallRestitution,
+                                   m_setup.config.tc);
         m_memory.lastKinetic = m_engine.kineticEnergy();
     }
 
     void beginLoop() override {
         m_eventsAtStart = m_engine.stats().events;
         m_collisionsAtStart = m_engine.stats().collisions;
-        if (std::isfinite(m_setup.endTime) && m_scene.edmd.series == "log" && m_scene.output.seriesInterval == 0 &&
-            rowTime(1) >= m_setup.endTime)
-            fmt::print(stderr, "note: edmd.series_first is not before the end; series.csv has one row at the end\n");
+        if (std::isfinite(m_setup.endTime) && m_scene.edmd.series == "log" &&
+            m_scene.output.seriesInterval == 0 && rowTime(1) >= m_setup.endTime)
+            fmt::print(stderr,
+                       "note: edmd.series_first is not before the end; series.csv has one row at the end\n");
     }
 
     std::uint32_t advance(const Stop& stop) override {
@@ -140,15 +148,33 @@ public:
     std::string diagnose(std::uint32_t) const override { return "the edmd run stopped"; }
 
     std::vector<std::string> seriesColumns() const override {
-        std::vector<std::string> c = {"time", "tau", "events", "collisions", "collisions_per_particle", "wall_collisions",
-                                      "kinetic_energy", "rotational_energy", "potential_energy", "total_energy",
-                                      "dissipated_energy", "volume_fraction", "energy_per_particle", "temperature",
-                                      "temperature_haff", "collision_frequency", "mean_free_path", "pressure",
-                                      "reduced_pressure", "tc_elastic_fraction", "kurtosis"};
+        std::vector<std::string> c = {"time",
+                                      "tau",
+                                      "events",
+                                      "collisions",
+                                      "collisions_per_particle",
+                                      "wall_collisions",
+                                      "kinetic_energy",
+                                      "rotational_energy",
+                                      "potential_energy",
+                                      "total_energy",
+                                      "dissipated_energy",
+                                      "volume_fraction",
+                                      "energy_per_particle",
+                                      "temperature",
+                                      "temperature_haff",
+                                      "collision_frequency",
+                                      "mean_free_path",
+                                      "pressure",
+                                      "reduced_pressure",
+                                      "tc_elastic_fraction",
+                                      "kurtosis"};
         for (int d = 0; d < D; ++d) c.push_back(std::string("kurtosis_") + "xyz"[d]);
-        for (const char* q : {"nu_q01", "nu_q10", "nu_q25", "nu_q50", "nu_q75", "nu_q90", "nu_q99"}) c.push_back(q);
+        for (const char* q : {"nu_q01", "nu_q10", "nu_q25", "nu_q50", "nu_q75", "nu_q90", "nu_q99"})
+            c.push_back(q);
         if (m_scene.edmd.clusters)
-            for (const char* k : {"clusters", "M1", "M2", "M1_reduced", "M2_reduced", "largest_cluster", "q_x"})
+            for (const char* k :
+                 {"clusters", "M1", "M2", "M1_reduced", "M2_reduced", "largest_cluster", "q_x"})
                 c.push_back(k);
         return c;
     }
@@ -164,10 +190,12 @@ public:
     std::string banner(const std::string& dir) const override {
         const auto& E = m_scene.edmd;
         std::string s = fmt::format(
-            "granulab {}: edmd {}D, {} {}, volume fraction {:.4f}, eps {}, t_E = {:.4g} s, TC t_c = {:.3g} s, ", kVersion,
-            D, m_engine.size(), D == 2 ? "disks" : "spheres", m_setup.volumeFraction, E.restitution, m_setup.tE,
-            m_setup.config.tc);
-        if (m_setup.endCollisions > 0) return s + fmt::format("{} collisions -> {}", m_setup.endCollisions, dir);
+            "granulab {}: edmd {}D, {} {}, volume fraction {:.4f}, eps {}, t_E = {:.4g} s, TC t_c = {:.3g} "
+            "s, ",
+            kVersion, D, m_engine.size(), D == 2 ? "disks" : "spheres", m_setup.volumeFraction, E.restitution,
+            m_setup.tE, m_setup.config.tc);
+        if (m_setup.endCollisions > 0)
+            return s + fmt::format("{} collisions -> {}", m_setup.endCollisions, dir);
         return s + fmt::format("to t = {:.6g} s{} -> {}", m_setup.endTime,
                                E.endTau > 0 ? fmt::format(" (tau = {:.4g})", E.endTau) : std::string(), dir);
     }
@@ -177,15 +205,18 @@ public:
         const double engineSeconds = std::max(1e-9, report.loopSeconds - report.outputSeconds);
         const double collisions = static_cast<double>(st.collisions - m_collisionsAtStart);
         const double events = static_cast<double>(st.events - m_eventsAtStart);
-        fmt::print(stderr, "done: {} collisions, {} events in {:.3g} s ({:.3g} collisions/s, {:.3g} events/s)\n",
+        fmt::print(stderr,
+                   "done: {} collisions, {} events in {:.3g} s ({:.3g} collisions/s, {:.3g} events/s)\n",
                    collisions, events, engineSeconds, collisions / engineSeconds, events / engineSeconds);
         fmt::print("results in {}/ : summary.json, series.csv, final.csv{}{}, checkpoint.bin{}\n", dir,
-                   m_scene.output.vtk ? ", snapshots.pvd" : "", m_scene.edmd.analysisFiles ? ", analysis/" : "",
-                   m_theory.is_null() ? "" : ", theory.csv");
+                   m_scene.output.vtk ? ", snapshots.pvd" : "",
+                   m_scene.edmd.analysisFiles ? ", analysis/" : "", m_theory.is_null() ? "" : ", theory.csv");
         if (m_scene.output.vtk)
-            fmt::print("view in ParaView: paraview {}/snapshots.pvd  (Glyph filter, type Sphere, scale array 'radius', "
-                       "factor 2; colour by 'collisions')\n",
-                       dir);
+            fmt::print(
+                "view in ParaView: paraview {}/snapshots.pvd  (Glyph filter, type Sphere, scale array "
+                "'radius', "
+                "factor 2; colour by 'collisions')\n",
+                dir);
         fmt::print("measure the final state: granulab analyze {}\n", dir);
     }
 
@@ -215,7 +246,8 @@ private:
         edmd::EngineConfig elastic = m_setup.config;
         elastic.restitution = {};
         elastic.wallRestitution = 1;
-        return Engine(elastic, std::move(state.x), std::move(state.v), std::move(state.radius), std::move(state.mass));
+        return Engine(elastic, std::move(state.x), std::move(state.v), std::move(state.radius),
+                      std::move(state.mass));
     }
 
     /// Time of series row `row` (row 0 is t = 0): series_interval, or linear/log over the run.
@@ -223,7 +255,8 @@ private:
         const Real end = m_setup.endTime;
         const auto points = m_scene.edmd.seriesPoints;
         if (!std::isfinite(end)) return kInf;  // collision-count rows
-        if (m_scene.output.seriesInterval > 0) return std::min(end, m_scene.output.seriesInterval * static_cast<Real>(row));
+        if (m_scene.output.seriesInterval > 0)
+            return std::min(end, m_scene.output.seriesInterval * static_cast<Real>(row));
         if (m_scene.edmd.series == "log") {
             const Real first = m_scene.edmd.seriesFirst > 0 ? m_scene.edmd.seriesFirst : m_setup.tE / 100;
             if (first >= end) return end;
@@ -265,7 +298,8 @@ analysis::PointSet EdmdSimulation<D, Queue>::snapshotPoints() const {
         const auto v = m_engine.velocityNow(i);
         for (int d = 0; d < D; ++d) {
             // Inside [0, box) for the analyses (a wall contact sits exactly at the edge).
-            p.x[static_cast<std::size_t>(D) * i + d] = std::clamp(x[d], Real(0), std::nextafter(p.box[d], Real(0)));
+            p.x[static_cast<std::size_t>(D) * i + d] =
+                std::clamp(x[d], Real(0), std::nextafter(p.box[d], Real(0)));
             p.v[static_cast<std::size_t>(D) * i + d] = v[d];
         }
         p.radius[i] = m_engine.radius(i);
@@ -302,10 +336,12 @@ std::vector<double> EdmdSimulation<D, Queue>::seriesRow() {
     auto& book = m_memory;
     const Real dt = t - book.lastTime;
     const Real dC = static_cast<Real>(st.collisions - book.lastCollisions);
-    const Real frequency = dt > 0 ? 2 * dC / (n * dt) : std::numeric_limits<Real>::quiet_NaN();  // f_E = 2 dC/(N dt), spec 5.2
+    const Real frequency =
+        dt > 0 ? 2 * dC / (n * dt) : std::numeric_limits<Real>::quiet_NaN();  // f_E = 2 dC/(N dt), spec 5.2
     // Collisional virial (spec 7 item 27): P = (2 <E_kin> + sum r.J / dt) / (D V) over the interval.
     const Real meanKinetic = 0.5 * (kinetic + book.lastKinetic);
-    const Real pressure = dt > 0 ? (2 * meanKinetic + (m_engine.collisionalVirial() - book.lastVirial) / dt) / (D * m_totalVolume)
+    const Real pressure = dt > 0 ? (2 * meanKinetic + (m_engine.collisionalVirial() - book.lastVirial) / dt) /
+                                       (D * m_totalVolume)
                                  : std::numeric_limits<Real>::quiet_NaN();
     const Real meanT = 2 * meanKinetic / (D * n);
     const Real reduced = pressure * m_totalVolume / (n * meanT) - 1;
@@ -313,42 +349,50 @@ std::vector<double> EdmdSimulation<D, Queue>::seriesRow() {
     // audit fix sqrt(2E/(D m)) = sqrt(T/m)).
     const Real meanSpeed = std::sqrt(std::pow(2.0, D) / kPi) * std::sqrt(vel.temperature / m_meanMass);
     const Real tau = m_setup.lambda > 0 ? m_setup.lambda * t / (2 * D * m_setup.tE) : 0;
-    const Real tHaff = m_setup.lambda > 0 ? m_scene.edmd.temperature / ((1 + tau) * (1 + tau)) : m_scene.edmd.temperature;
+    const Real tHaff =
+        m_setup.lambda > 0 ? m_scene.edmd.temperature / ((1 + tau) * (1 + tau)) : m_scene.edmd.temperature;
     // Volume fraction with the current radii (growing spheres change it), averaged over the row
     // interval like the pressure, so that an equation of state can be read off one row.
     Real particleVolume = 0;
     for (const Real r : points.radius) particleVolume += edmd::ballVolume(D, r);
     const Real fractionNow = particleVolume / m_totalVolume;
-    const Real fraction = book.lastVolumeFraction >= 0 ? 0.5 * (fractionNow + book.lastVolumeFraction) : fractionNow;
-    std::vector<double> row = {t,
-                               tau,
-                               static_cast<double>(st.events),
-                               static_cast<double>(st.collisions),
-                               2 * static_cast<double>(st.collisions) / n,
-                               static_cast<double>(st.wallCollisions),
-                               kinetic,
-                               m_engine.rotationalEnergy(),
-                               m_engine.potentialEnergy(),
-                               kinetic + m_engine.rotationalEnergy() + m_engine.potentialEnergy(),
-                               m_engine.dissipatedEnergy(),
-                               fraction,
-                               vel.kineticEnergy,
-                               vel.temperature,
-                               tHaff,
-                               frequency,
-                               frequency > 0 ? meanSpeed / frequency : std::numeric_limits<Real>::quiet_NaN(),
-                               pressure,
-                               reduced,
-                               st.collisions ? static_cast<double>(st.tcElastic) / static_cast<double>(st.collisions) : 0.0,
-                               vel.pooled.kurtosis};
+    const Real fraction =
+        book.lastVolumeFraction >= 0 ? 0.5 * (fractionNow + book.lastVolumeFraction) : fractionNow;
+    std::vector<double> row = {
+        t,
+        tau,
+        static_cast<double>(st.events),
+        static_cast<double>(st.collisions),
+        2 * static_cast<double>(st.collisions) / n,
+        static_cast<double>(st.wallCollisions),
+        kinetic,
+        m_engine.rotationalEnergy(),
+        m_engine.potentialEnergy(),
+        kinetic + m_engine.rotationalEnergy() + m_engine.potentialEnergy(),
+        m_engine.dissipatedEnergy(),
+        fraction,
+        vel.kineticEnergy,
+        vel.temperature,
+        tHaff,
+        frequency,
+        frequency > 0 ? meanSpeed / frequency : std::numeric_limits<Real>::quiet_NaN(),
+        pressure,
+        reduced,
+        st.collisions ? static_cast<double>(st.tcElastic) / static_cast<double>(st.collisions) : 0.0,
+        vel.pooled.kurtosis};
     for (int d = 0; d < D; ++d) row.push_back(vel.axis[d].kurtosis);
     for (const Real q : m.density.quantiles) row.push_back(q);
-    m_lastRow = {{"time", t}, {"tau", tau}, {"temperature", vel.temperature}, {"collision_frequency", frequency},
-                 {"reduced_pressure", reduced}, {"kurtosis", vel.pooled.kurtosis}};
+    m_lastRow = {{"time", t},
+                 {"tau", tau},
+                 {"temperature", vel.temperature},
+                 {"collision_frequency", frequency},
+                 {"reduced_pressure", reduced},
+                 {"kurtosis", vel.pooled.kurtosis}};
     if (m.clusters) {
         const auto& cs = *m.clusters;
-        for (const double v : {static_cast<double>(cs.clusterCount), cs.moment[1], cs.moment[2], cs.reducedMoment[1],
-                               cs.reducedMoment[2], static_cast<double>(cs.largest), cs.largestFraction})
+        for (const double v :
+             {static_cast<double>(cs.clusterCount), cs.moment[1], cs.moment[2], cs.reducedMoment[1],
+              cs.reducedMoment[2], static_cast<double>(cs.largest), cs.largestFraction})
             row.push_back(v);
         m_lastRow["M1"] = cs.moment[1];
         m_lastRow["q_x"] = cs.largestFraction;
@@ -382,8 +426,8 @@ void EdmdSimulation<D, Queue>::snapshot(const std::string& dir, int index, io::P
     io::GasAnalysisSettings settings;
     settings.radius = m_setup.init.radius;
     settings.clusterDelta = m_scene.edmd.clusterDelta;
-    io::writeGasAnalysisFiles(fmt::format("{}/analysis/{{}}_{:06d}.csv", dir, index), m.points, m.density, *m.clusters,
-                              settings, m_engine.time());
+    io::writeGasAnalysisFiles(fmt::format("{}/analysis/{{}}_{:06d}.csv", dir, index), m.points, m.density,
+                              *m.clusters, settings, m_engine.time());
 }
 
 template <int D, class Queue>
@@ -423,12 +467,15 @@ void EdmdSimulation<D, Queue>::writeFinal(const std::string& dir) {
     const auto th = edmd::referenceThresholds(ref);
     std::vector<Real> taus;
     const Real endTime = m_setup.endTime;
-    const Real tauEnd = std::isfinite(endTime) ? std::max(1.0, m_setup.lambda * endTime / (2 * D * m_setup.tE)) : 1e5;
+    const Real tauEnd =
+        std::isfinite(endTime) ? std::max(1.0, m_setup.lambda * endTime / (2 * D * m_setup.tE)) : 1e5;
     for (Real tau = 1e-3; tau <= tauEnd * 1.0001; tau *= std::pow(10.0, 0.05)) taus.push_back(tau);
     io::writeFileAtomically(dir + "/theory.csv", edmd::referenceCurvesCsv(ref, taus));
-    m_theory = {{"g_2a", th.g2a}, {"l_opt", th.lOpt}, {"lambda", th.lambda}, {"lambda_cl", th.lambdaCl},
-                {"lambda_sh", th.lambdaSh}, {"eps_ic", th.epsIc}, {"eps_cl", th.epsCl}, {"t_E", th.tE},
-                {"f_E0", th.fE0}, {"l_E", th.lE}, {"tau_hc", th.tauHc}, {"tau_cs", th.tauCs}, {"tau_p_fit", th.tauPFit}};
+    m_theory = {
+        {"g_2a", th.g2a},           {"l_opt", th.lOpt},   {"lambda", th.lambda}, {"lambda_cl", th.lambdaCl},
+        {"lambda_sh", th.lambdaSh}, {"eps_ic", th.epsIc}, {"eps_cl", th.epsCl},  {"t_E", th.tE},
+        {"f_E0", th.fE0},           {"l_E", th.lE},       {"tau_hc", th.tauHc},  {"tau_cs", th.tauCs},
+        {"tau_p_fit", th.tauPFit}};
 }
 
 template <int D, class Queue>
@@ -463,8 +510,10 @@ nlohmann::json EdmdSimulation<D, Queue>::summaryKeys(const RunReport& report) co
     // Throughput of the event loop alone (outputs and measurements excluded), this session.
     js["events_per_s"] = events / engineSeconds;
     js["collisions_per_s"] = collisions / engineSeconds;
-    js["energy"] = {{"kinetic", m_engine.kineticEnergy()}, {"rotational", m_engine.rotationalEnergy()},
-                    {"potential", m_engine.potentialEnergy()}, {"dissipated", m_engine.dissipatedEnergy()}};
+    js["energy"] = {{"kinetic", m_engine.kineticEnergy()},
+                    {"rotational", m_engine.rotationalEnergy()},
+                    {"potential", m_engine.potentialEnergy()},
+                    {"dissipated", m_engine.dissipatedEnergy()}};
     const auto p = m_engine.momentum();
     js["momentum"] = std::vector<Real>(p.c, p.c + D);
     js["last_row"] = m_lastRow;
@@ -473,10 +522,13 @@ nlohmann::json EdmdSimulation<D, Queue>::summaryKeys(const RunReport& report) co
 }
 
 template <int D>
-std::unique_ptr<Simulation> withQueue(const model::SceneDef& scene, edmd::Setup setup, const SimulationOptions& options) {
+std::unique_ptr<Simulation> withQueue(const model::SceneDef& scene, edmd::Setup setup,
+                                      const SimulationOptions& options) {
     const std::string& queue = scene.edmd.queue;
-    if (queue == "heap") return std::make_unique<EdmdSimulation<D, edmd::AddressableHeap>>(scene, std::move(setup), options);
-    if (queue == "tree") return std::make_unique<EdmdSimulation<D, edmd::TournamentTree>>(scene, std::move(setup), options);
+    if (queue == "heap")
+        return std::make_unique<EdmdSimulation<D, edmd::AddressableHeap>>(scene, std::move(setup), options);
+    if (queue == "tree")
+        return std::make_unique<EdmdSimulation<D, edmd::TournamentTree>>(scene, std::move(setup), options);
     return std::make_unique<EdmdSimulation<D, edmd::CalendarQueue>>(scene, std::move(setup), options);
 }
 
@@ -489,9 +541,11 @@ edmd::Setup checkAndResolveEdmd(const model::SceneDef& scene) {
     return edmd::resolveScene(scene);
 }
 
-std::unique_ptr<Simulation> makeEdmdSimulation(const model::SceneDef& scene, const SimulationOptions& options) {
+std::unique_ptr<Simulation> makeEdmdSimulation(const model::SceneDef& scene,
+                                               const SimulationOptions& options) {
     edmd::Setup setup = checkAndResolveEdmd(scene);
-    return setup.dim == 2 ? withQueue<2>(scene, std::move(setup), options) : withQueue<3>(scene, std::move(setup), options);
+    return setup.dim == 2 ? withQueue<2>(scene, std::move(setup), options)
+                          : withQueue<3>(scene, std::move(setup), options);
 }
 
 }  // namespace granulab::app

@@ -35,8 +35,10 @@ Real hertzDampingRatio(Real e, bool clip) {
     if (hertzRestitution(hi, clip) > e) return hi;
     for (int it = 0; it < 40; ++it) {
         const Real mid = 0.5 * (lo + hi);
-        if (hertzRestitution(mid, clip) > e) lo = mid;
-        else hi = mid;
+        if (hertzRestitution(mid, clip) > e)
+            lo = mid;
+        else
+            hi = mid;
     }
     return 0.5 * (lo + hi);
 }

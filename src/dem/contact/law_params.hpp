@@ -43,8 +43,11 @@ struct PairMaterials {
 /// Required values that are missing are recorded.
 class LawParams {
 public:
-    LawParams(std::map<std::string, Real> values, std::vector<std::string> axisKeywords, PairMaterials materials = {})
-        : m_values(std::move(values)), m_keywords(std::move(axisKeywords)), m_materials(std::move(materials)) {}
+    LawParams(std::map<std::string, Real> values, std::vector<std::string> axisKeywords,
+              PairMaterials materials = {})
+        : m_values(std::move(values)),
+          m_keywords(std::move(axisKeywords)),
+          m_materials(std::move(materials)) {}
 
     const PairMaterials& materials() const noexcept { return m_materials; }
     /// Effective modulus E* = ((1 - nu_a^2)/E_a + (1 - nu_b^2)/E_b)^-1 [Pa] (cfddem Eq. 3.32); records
@@ -79,7 +82,9 @@ public:
     }
     const std::vector<std::string>& missing() const noexcept { return m_missing; }
     /// A law reports a value it cannot realise (key, message).
-    void fail(std::string key, std::string message) const { m_failures.push_back({std::move(key), std::move(message)}); }
+    void fail(std::string key, std::string message) const {
+        m_failures.push_back({std::move(key), std::move(message)});
+    }
     const std::vector<std::pair<std::string, std::string>>& failures() const noexcept { return m_failures; }
 
 private:
