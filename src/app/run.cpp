@@ -28,7 +28,7 @@ int runCommand(const RunOptions& opt) {
                                 ? opt.outDir
                                 : (!opt.resumeDir.empty() ? opt.resumeDir : defaultOutDir(opt.scene));
     fs::create_directories(dir);
-    return runSimulation(*sim, scene, {opt.scene, dir, opt.resumeDir, opt.quiet, startWall});
+    return runSimulation(*sim, scene, {engine.name, opt.scene, dir, opt.resumeDir, opt.quiet, startWall});
 }
 
 }  // namespace granulab::app

@@ -27,8 +27,8 @@ std::string checkpointLine(double time, const std::string& where) {
     return fmt::format("The last good checkpoint (t = {:.6g} s) is kept in {}/checkpoint.bin.", time, where);
 }
 
-io::CheckpointHeader headerOf(const Simulation& sim, std::int64_t nextSnapshot) {
-    return {sim.engine(), sim.identity(), {nextSnapshot}};
+io::CheckpointHeader headerOf(const std::string& engine, const Simulation& sim, std::int64_t nextSnapshot) {
+    return {engine, sim.identity(), {nextSnapshot}};
 }
 
 }  // namespace
@@ -43,7 +43,7 @@ int runSimulation(Simulation& sim, const model::SceneDef& scene, const RunContex
         "No checkpoint was written before the failure (see output.checkpoint_interval).";
     if (resumed) {
         try {
-            book = io::readCheckpoint(ctx.resumeDir, headerOf(sim, 0),
+            book = io::readCheckpoint(ctx.resumeDir, headerOf(ctx.engine, sim, 0),
                                       [&](std::istream& in) { sim.loadState(in); });
         } catch (const std::runtime_error& e) {  // a missing or foreign checkpoint is bad input
             throw SceneError(makeDiagnostic(ctx.resumeDir, 0, "--resume", e.what()));
@@ -119,7 +119,7 @@ int runSimulation(Simulation& sim, const model::SceneDef& scene, const RunContex
             if (doSnapshot) writeSnapshot();
             if (doCheckpoint) {
                 seriesFile.flush();
-                io::writeCheckpoint(ctx.dir, headerOf(sim, book.nextSnapshot),
+                io::writeCheckpoint(ctx.dir, headerOf(ctx.engine, sim, book.nextSnapshot),
                                     [&](std::ostream& out) { sim.saveState(out); });
                 lastCheckpoint = checkpointLine(t, ctx.dir);
             }
@@ -143,7 +143,7 @@ int runSimulation(Simulation& sim, const model::SceneDef& scene, const RunContex
         fmt::print(stderr, "warning: {}\n", warnings[k]);  // shown even with --quiet
     if (ok) sim.writeFinal(ctx.dir);
     io::SummaryCommon common;
-    common.engine = sim.engine();
+    common.engine = ctx.engine;
     common.scene = ctx.scenePath;
     common.completed = ok;
     if (!ok) common.diagnosis = sim.diagnose(status) + " " + lastCheckpoint;

@@ -12,6 +12,7 @@
 namespace granulab::app {
 
 struct RunContext {
+    std::string engine;  ///< name of the engine table row (checkpoint and summary.json)
     std::string scenePath;
     std::string dir;        ///< output folder (exists)
     std::string resumeDir;  ///< empty: a fresh run

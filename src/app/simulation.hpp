@@ -77,7 +77,6 @@ public:
     virtual ~Simulation() = default;
 
     // ---- identity and state --------------------------------------------------------------
-    virtual std::string engine() const = 0;                            ///< run.engine of the table row
     virtual double time() const = 0;                                   ///< [s]
     virtual std::uint64_t count() const = 0;                           ///< steps (dem), collisions (edmd)
     virtual std::uint64_t progressCounter() const { return count(); }  ///< for the rate shown

@@ -31,7 +31,6 @@ public:
           m_dt(scene.dem.dt),
           m_endStep(dem::stepsIn(scene.run.endTime, scene.dem.dt)) {}
 
-    std::string engine() const override { return "dem"; }
     double time() const override { return m_world.time(); }
     std::uint64_t count() const override { return static_cast<std::uint64_t>(m_world.stepIndex()); }
     std::string progressUnit() const override { return "steps"; }

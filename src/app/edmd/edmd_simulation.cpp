@@ -62,7 +62,6 @@ public:
     EdmdSimulation(const model::SceneDef& scene, edmd::Setup setup, const SimulationOptions& options)
         : m_scene(scene), m_setup(std::move(setup)), m_options(options), m_engine(makeEngine()) {}
 
-    std::string engine() const override { return "edmd"; }
     double time() const override { return m_engine.time(); }
     std::uint64_t count() const override { return m_engine.stats().collisions; }
     std::uint64_t progressCounter() const override { return m_engine.stats().events; }
@@ -145,7 +144,17 @@ public:
         return kSimOk;
     }
 
-    std::string diagnose(std::uint32_t) const override { return "the edmd run stopped"; }
+    /// A non-finite energy at a series row (a collision rule or a growth rate out of range).
+    std::uint32_t health() const override {
+        return std::isfinite(m_engine.kineticEnergy() + m_engine.rotationalEnergy()) ? kSimOk : kSimNonFinite;
+    }
+
+    std::string diagnose(std::uint32_t) const override {
+        return fmt::format(
+            "the kinetic energy became NaN or infinite at t = {:.6g} s ({} collisions). Likely causes: a "
+            "restitution model or growth rate outside its range, or overlapping particles at the start.",
+            m_engine.time(), m_engine.stats().collisions);
+    }
 
     std::vector<std::string> seriesColumns() const override {
         std::vector<std::string> c = {"time",
