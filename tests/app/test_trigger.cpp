@@ -39,7 +39,8 @@ TEST(Trigger, CountSchedulesStopOnTheirPointsAndClampedSchedulesEnd) {
     EXPECT_EQ(stop.count, 120u);
     EXPECT_TRUE(std::isinf(stop.time));
     // Rows clamped to the end of the run (t = 1): the schedule ends after its last point.
-    Trigger rows({Schedule::Unit::Time, true, [](std::int64_t k) { return std::min(0.3 * static_cast<double>(k), 1.0); }, 0});
+    Trigger rows({Schedule::Unit::Time, true,
+                  [](std::int64_t k) { return std::min(0.3 * static_cast<double>(k), 1.0); }, 0});
     rows.seek(0, 0);
     for (const double t : {0.3, 0.6, 0.8999999999999999, 1.0}) {
         EXPECT_DOUBLE_EQ(rows.next(), t);

@@ -57,8 +57,9 @@ TEST(OutputWriters, FinalCsvPutsTheContractColumnsFirst) {
         w.endRow();
         w.commit();
     }
-    EXPECT_EQ(test::readText(path2), "id,shape,x,y,vx,vy,angle,omega,radius,mass,material\n"
-                                     "7,disk,0.5,-1,0.25,0,0.125,3,0.10000000000000001,2,steel\n");
+    EXPECT_EQ(test::readText(path2),
+              "id,shape,x,y,vx,vy,angle,omega,radius,mass,material\n"
+              "7,disk,0.5,-1,0.25,0,0.125,3,0.10000000000000001,2,steel\n");
     {
         io::FinalCsvWriter w(path3, {3, false, {"collisions"}});
         io::FinalCsvParticle p;
@@ -69,8 +70,9 @@ TEST(OutputWriters, FinalCsvPutsTheContractColumnsFirst) {
         w.endRow();
         w.commit();
     }
-    EXPECT_EQ(test::readText(path3), "id,shape,x,y,z,vx,vy,vz,omega_x,omega_y,omega_z,radius,collisions\n"
-                                     "0,sphere,0,0,0,0,0,0,1,0,0,0,12\n");
+    EXPECT_EQ(test::readText(path3),
+              "id,shape,x,y,z,vx,vy,vz,omega_x,omega_y,omega_z,radius,collisions\n"
+              "0,sphere,0,0,0,0,0,0,1,0,0,0,12\n");
 }
 
 TEST(OutputWriters, CheckpointContainerChecksEngineIdentityAndBlobLength) {
@@ -96,8 +98,11 @@ TEST(OutputWriters, CheckpointContainerChecksEngineIdentityAndBlobLength) {
         }
         return std::string("no error");
     };
-    EXPECT_NE(message({"other", header.identity, {}}, 5).find("written by the toy engine"), std::string::npos);
-    EXPECT_NE(message({"toy", {{"toy.mode", "b"}, {"particles", "3"}}, {}}, 5).find("--set toy.mode=a"), std::string::npos);
-    EXPECT_NE(message({"toy", {{"toy.mode", "a"}, {"particles", "4"}}, {}}, 5).find("another scene"), std::string::npos);
+    EXPECT_NE(message({"other", header.identity, {}}, 5).find("written by the toy engine"),
+              std::string::npos);
+    EXPECT_NE(message({"toy", {{"toy.mode", "b"}, {"particles", "3"}}, {}}, 5).find("--set toy.mode=a"),
+              std::string::npos);
+    EXPECT_NE(message({"toy", {{"toy.mode", "a"}, {"particles", "4"}}, {}}, 5).find("another scene"),
+              std::string::npos);
     EXPECT_NE(message(header, 4).find("not 5 bytes"), std::string::npos);  // an engine reading too little
 }
