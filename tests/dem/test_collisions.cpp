@@ -42,6 +42,7 @@ struct Damping {
 /// Runs a head-on collision along x; `wall` puts a wall at x = 0 instead of a second disk. The
 /// scene is built in code (test::DemSceneBuilder), without scene text.
 Measured collide(const Damping& damping, bool wall, Real dt) {
+    const Real r = 0.5, v = 1.0;  // [m], [m/s]
     auto params = damping.params;
     params["kn"] = 1.0e4;
     test::DemSceneBuilder b(dt, 1.0);

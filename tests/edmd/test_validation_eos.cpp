@@ -17,7 +17,10 @@
 using namespace granulab;
 using namespace granulab::edmd;
 using namespace granulab::edmd::validation;
-namespace kt = granulab::analysis;
+namespace kt {  // the measurements (analysis) and the kinetic theory of the gas (edmd)
+using namespace granulab::analysis;
+using namespace granulab::edmd;
+}  // namespace kt
 
 namespace {
 
