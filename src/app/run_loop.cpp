@@ -31,6 +31,57 @@ io::CheckpointHeader headerOf(const std::string& engine, const Simulation& sim, 
     return {engine, sim.identity(), {nextSnapshot}};
 }
 
+/// Loads `ctx.resumeDir`/checkpoint.bin into `sim`; a missing or foreign checkpoint is bad
+/// input (SceneError, exit status 2).
+io::RunBookkeeping resume(Simulation& sim, const RunContext& ctx, std::string& lastCheckpoint) {
+    io::RunBookkeeping book;
+    try {
+        book = io::readCheckpoint(ctx.resumeDir, headerOf(ctx.engine, sim, 0),
+                                  [&](std::istream& in) { sim.loadState(in); });
+    } catch (const std::runtime_error& e) {
+        throw SceneError(makeDiagnostic(ctx.resumeDir, 0, "--resume", e.what()));
+    }
+    lastCheckpoint = checkpointLine(sim.time(), ctx.resumeDir);
+    return book;
+}
+
+/// How the loop ended, for finishRun.
+struct LoopOutcome {
+    std::uint32_t status = kSimOk;  ///< SimStatus flags of the failed advance or row
+    RunReport report;
+    std::string lastCheckpoint;      ///< sentence naming the last good checkpoint
+    std::size_t warningsBefore = 0;  ///< warnings already printed before the loop
+};
+
+/// The end of a run: warnings raised during it, final.csv (completed runs), summary.json, the
+/// diagnosis of a failure or the done message. Returns the exit status.
+int finishRun(Simulation& sim, const RunContext& ctx, const LoopOutcome& outcome) {
+    const auto& [status, report, lastCheckpoint, warningsBefore] = outcome;
+    const bool ok = status == kSimOk;
+    const auto warnings = sim.warnings();
+    for (std::size_t k = warningsBefore; k < warnings.size(); ++k)
+        fmt::print(stderr, "warning: {}\n", warnings[k]);  // shown even with --quiet
+    if (ok) sim.writeFinal(ctx.dir);
+    io::SummaryCommon common;
+    common.engine = ctx.engine;
+    common.scene = ctx.scenePath;
+    common.completed = ok;
+    if (!ok) common.diagnosis = sim.diagnose(status) + " " + lastCheckpoint;
+    common.particles = sim.particles();
+    common.simTime = sim.time();
+    common.wallTime = wallSeconds() - ctx.startWall;
+    common.loopTime = report.loopSeconds;
+    common.memoryBytes = sim.memoryBytes();
+    common.warnings = warnings;
+    io::writeSummary(ctx.dir + "/summary.json", common, sim.summaryKeys(report));
+    if (!ok) {
+        fmt::print(stderr, "error: {}\n", common.diagnosis);
+        return kExitUnstable;
+    }
+    if (!ctx.quiet) sim.printDone(ctx.dir, report);
+    return kExitOk;
+}
+
 }  // namespace
 
 int runSimulation(Simulation& sim, const model::SceneDef& scene, const RunContext& ctx) {
@@ -41,17 +92,10 @@ int runSimulation(Simulation& sim, const model::SceneDef& scene, const RunContex
     io::RunBookkeeping book;
     std::string lastCheckpoint =
         "No checkpoint was written before the failure (see output.checkpoint_interval).";
-    if (resumed) {
-        try {
-            book = io::readCheckpoint(ctx.resumeDir, headerOf(ctx.engine, sim, 0),
-                                      [&](std::istream& in) { sim.loadState(in); });
-        } catch (const std::runtime_error& e) {  // a missing or foreign checkpoint is bad input
-            throw SceneError(makeDiagnostic(ctx.resumeDir, 0, "--resume", e.what()));
-        }
-        lastCheckpoint = checkpointLine(sim.time(), ctx.resumeDir);
-    } else {
+    if (resumed)
+        book = resume(sim, ctx, lastCheckpoint);
+    else
         sim.start();
-    }
     for (Trigger* t : {&end, &series, &snapshots, &checkpoints, &progressTick, &benchmark})
         t->seek(sim.time(), sim.count());
     if (resumed && !(end.next() < std::numeric_limits<double>::infinity()))
@@ -137,29 +181,7 @@ int runSimulation(Simulation& sim, const model::SceneDef& scene, const RunContex
         report.benchmarkCount = sim.count() - benchmarkCount;
     }
 
-    const bool ok = status == kSimOk;
-    const auto warnings = sim.warnings();
-    for (std::size_t k = warningsBefore; k < warnings.size(); ++k)
-        fmt::print(stderr, "warning: {}\n", warnings[k]);  // shown even with --quiet
-    if (ok) sim.writeFinal(ctx.dir);
-    io::SummaryCommon common;
-    common.engine = ctx.engine;
-    common.scene = ctx.scenePath;
-    common.completed = ok;
-    if (!ok) common.diagnosis = sim.diagnose(status) + " " + lastCheckpoint;
-    common.particles = sim.particles();
-    common.simTime = sim.time();
-    common.wallTime = wallSeconds() - ctx.startWall;
-    common.loopTime = report.loopSeconds;
-    common.memoryBytes = sim.memoryBytes();
-    common.warnings = warnings;
-    io::writeSummary(ctx.dir + "/summary.json", common, sim.summaryKeys(report));
-    if (!ok) {
-        fmt::print(stderr, "error: {}\n", common.diagnosis);
-        return kExitUnstable;
-    }
-    if (!ctx.quiet) sim.printDone(ctx.dir, report);
-    return kExitOk;
+    return finishRun(sim, ctx, {status, report, lastCheckpoint, warningsBefore});
 }
 
 }  // namespace granulab::app
