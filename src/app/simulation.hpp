@@ -49,6 +49,15 @@ struct Schedule {
     static Schedule periodic(Unit unit, double every, bool exact = true) {
         return {unit, exact, nullptr, every};
     }
+    /// One exact point `at` (the end of the run, the start of the benchmark segment).
+    static Schedule once(Unit unit, double at) {
+        return {unit, true,
+                [at](std::int64_t k) { return k == 1 ? at : std::numeric_limits<double>::infinity(); }, 0};
+    }
+    /// Exact points given by `point(k)`, k >= 1.
+    static Schedule points(Unit unit, std::function<double(std::int64_t k)> point) {
+        return {unit, true, std::move(point), 0};
+    }
 };
 
 /// When the run ends and when each output fires (scene settings in the engine's units).

@@ -50,10 +50,8 @@ public:
         const auto every = [&](Real interval, std::int64_t fallback) {
             return static_cast<double>(interval > 0 ? dem::periodSteps(interval, m_dt) : fallback);
         };
-        const std::int64_t endStep = m_endStep;
         RunPlan p;
-        p.end = {U::Count, true,
-                 [endStep](std::int64_t k) { return k == 1 ? static_cast<double>(endStep) : kInf; }, 0};
+        p.end = Schedule::once(U::Count, static_cast<double>(m_endStep));
         p.series = Schedule::periodic(U::Count,
                                       every(out.seriesInterval, std::max<std::int64_t>(1, m_endStep / 100)));
         p.snapshots = Schedule::periodic(U::Count, every(out.snapshotInterval, m_endStep));
@@ -64,12 +62,8 @@ public:
             Schedule::periodic(U::Count, static_cast<double>(std::max<std::int64_t>(64, m_endStep / 200)));
         const std::int64_t benchStep =
             m_scene.run.benchmarkFrom >= 0 ? dem::stepsIn(m_scene.run.benchmarkFrom, m_dt) : -1;
-        p.benchmark = benchStep >= 0 ? Schedule{U::Count, true,
-                                                [benchStep](std::int64_t k) {
-                                                    return k == 1 ? static_cast<double>(benchStep) : kInf;
-                                                },
-                                                0}
-                                     : Schedule::never();
+        p.benchmark =
+            benchStep >= 0 ? Schedule::once(U::Count, static_cast<double>(benchStep)) : Schedule::never();
         p.progressEnd = m_scene.run.endTime;
         return p;
     }
@@ -282,8 +276,6 @@ public:
     void loadState(std::istream& in) override { m_world.loadState(in); }
 
 private:
-    static constexpr double kInf = std::numeric_limits<double>::infinity();
-
     const model::SceneDef& m_scene;
     SimulationOptions m_options;
     std::vector<std::string> m_warnings;

@@ -80,9 +80,9 @@ public:
         p.progress = Schedule::never();
         p.benchmark = Schedule::never();
         if (m_setup.endCollisions == 0) {
-            p.end = {U::Time, true, [endTime](std::int64_t k) { return k == 1 ? endTime : kInf; }, 0};
-            p.series = {U::Time, true,
-                        [this, endTime](std::int64_t k) { return std::min(rowTime(k), endTime); }, 0};
+            p.end = Schedule::once(U::Time, endTime);
+            p.series = Schedule::points(
+                U::Time, [this, endTime](std::int64_t k) { return std::min(rowTime(k), endTime); });
             p.checkpoints = Schedule::periodic(
                 U::Time, out.checkpointInterval > 0 ? out.checkpointInterval : endTime / 10);
             p.progressEnd = endTime;
@@ -94,16 +94,15 @@ public:
             return static_cast<double>(
                 std::min<std::uint64_t>(endC, static_cast<std::uint64_t>(k) * endC / points));
         };
-        p.end = {U::Count, true, [endC](std::int64_t k) { return k == 1 ? static_cast<double>(endC) : kInf; },
-                 0};
-        p.series = {U::Count, true, rowTarget, 0};
+        p.end = Schedule::once(U::Count, static_cast<double>(endC));
+        p.series = Schedule::points(U::Count, rowTarget);
         p.snapshots.exact = false;
         if (out.checkpointInterval > 0) {
             p.checkpoints = Schedule::periodic(U::Time, out.checkpointInterval, false);
         } else {  // a checkpoint every tenth of the rows
             const std::int64_t every = std::max<std::int64_t>(1, E.seriesPoints / 10);
-            p.checkpoints = {U::Count, true,
-                             [rowTarget, every](std::int64_t k) { return rowTarget(k * every); }, 0};
+            p.checkpoints = Schedule::points(
+                U::Count, [rowTarget, every](std::int64_t k) { return rowTarget(k * every); });
         }
         p.progressEnd = static_cast<double>(endC);
         p.progressByCount = true;
