@@ -2,6 +2,8 @@
 // Edit distance and "did you mean" hints.
 #include "core/suggest.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cctype>
 
@@ -44,6 +46,14 @@ std::string joinList(const std::vector<std::string>& items) {
         s += items[k];
     }
     return s;
+}
+
+void checkOneOf(Diagnostics& diags, const SourceLoc& loc, const std::string& key, const std::string& value,
+                const std::vector<std::string>& allowed) {
+    if (std::find(allowed.begin(), allowed.end(), value) == allowed.end())
+        diags.error(loc, key,
+                    fmt::format("'{}' is not allowed{}; allowed: {}", value, didYouMean(value, allowed),
+                                joinList(allowed)));
 }
 
 }  // namespace granulab

@@ -5,6 +5,8 @@
 #include <string_view>
 #include <vector>
 
+#include "core/error.hpp"
+
 namespace granulab {
 
 /// Levenshtein distance, case-insensitive.
@@ -15,5 +17,10 @@ std::string didYouMean(std::string_view word, const std::vector<std::string>& ca
 
 /// "a, b, c" for messages listing the allowed values.
 std::string joinList(const std::vector<std::string>& items);
+
+/// Reports `key` at `loc` unless `value` is one of `allowed`: "'x' is not allowed (did you mean
+/// 'y'?); allowed: a, b".
+void checkOneOf(Diagnostics& diags, const SourceLoc& loc, const std::string& key, const std::string& value,
+                const std::vector<std::string>& allowed);
 
 }  // namespace granulab

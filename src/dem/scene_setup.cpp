@@ -111,15 +111,8 @@ void checkStartOverlaps(const model::SceneDef& scene, const InitialParticles& in
 
 PreparedScene prepareScene(const model::SceneDef& scene, Diagnostics& diags) {
     const auto names = model::materialNames(scene);
-    const auto oneOf = [&](const std::string& key, const std::string& v,
-                           const std::vector<std::string>& allowed) {
-        if (std::find(allowed.begin(), allowed.end(), v) == allowed.end())
-            diags.error(scene.dem.loc, key,
-                        fmt::format("'{}' is not allowed{}; allowed: {}", v, didYouMean(v, allowed),
-                                    joinList(allowed)));
-    };
-    oneOf("dem.integrator", scene.dem.integrator, integratorNames());
-    oneOf("dem.broad_phase", scene.dem.broadPhase, broadPhaseNames());
+    checkOneOf(diags, scene.dem.loc, "dem.integrator", scene.dem.integrator, integratorNames());
+    checkOneOf(diags, scene.dem.loc, "dem.broad_phase", scene.dem.broadPhase, broadPhaseNames());
     PreparedScene out;
     const LawTable laws = buildLawTable(scene, diags);
     out.initial = generateParticles(scene, names, diags);

@@ -19,14 +19,6 @@ namespace {
 const std::vector<std::string> kModes = {"const", "equal", "gauss"};
 const std::vector<std::string> kCornerAngles = {"regular", "rand1", "rand2", "full", "special_rectangle"};
 
-void oneOf(Diagnostics& d, const SourceLoc& loc, const std::string& key, const std::string& v,
-           const std::vector<std::string>& allowed) {
-    if (std::find(allowed.begin(), allowed.end(), v) == allowed.end())
-        d.error(
-            loc, key,
-            fmt::format("'{}' is not allowed{}; allowed: {}", v, didYouMean(v, allowed), joinList(allowed)));
-}
-
 void cornerCountInRange(Diagnostics& d, const SourceLoc& loc, const std::string& key, std::int64_t n) {
     if (n < 3 || n > model::kMaxShapeCorners)
         d.error(loc, key,
@@ -95,7 +87,7 @@ void checkShapeDef(const model::ShapeDef& s, std::size_t k, const std::vector<mo
         if (all[j].name == s.name && !s.name.empty())
             d.error(s.loc, key + ".name",
                     fmt::format("duplicate shape name '{}' (first defined at {})", s.name, all[j].loc.str()));
-    oneOf(d, s.loc, key + ".rotation_mode", s.rotationMode, kModes);
+    checkOneOf(d, s.loc, key + ".rotation_mode", s.rotationMode, kModes);
     if (s.kind == "polygon") {
         checkPolygonCorners(s, key + ".corners", d, warnings);
     } else if (s.kind == "regular") {
@@ -112,9 +104,9 @@ void checkShapeDef(const model::ShapeDef& s, std::size_t k, const std::vector<mo
         cornerCountInRange(d, s.loc, key + ".corner_count", s.cornerCount);
     } else if (s.kind == "grain") {
         positiveSize(d, s.loc, key + ".size", s.size);
-        oneOf(d, s.loc, key + ".size_mode", s.sizeMode, kModes);
-        oneOf(d, s.loc, key + ".corner_count_mode", s.cornerCountMode, kModes);
-        oneOf(d, s.loc, key + ".corner_angles", s.cornerAngles, kCornerAngles);
+        checkOneOf(d, s.loc, key + ".size_mode", s.sizeMode, kModes);
+        checkOneOf(d, s.loc, key + ".corner_count_mode", s.cornerCountMode, kModes);
+        checkOneOf(d, s.loc, key + ".corner_angles", s.cornerAngles, kCornerAngles);
         if (!(s.sizeVariation >= 0 && s.sizeVariation < 1))
             d.error(s.loc, key + ".size_variation",
                     fmt::format("must be in [0, 1), got {}", s.sizeVariation));

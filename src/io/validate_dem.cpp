@@ -44,10 +44,7 @@ public:
     }
     void oneOf(const SourceLoc& loc, const std::string& key, const std::string& v,
                const std::vector<std::string>& allowed) {
-        if (std::find(allowed.begin(), allowed.end(), v) == allowed.end())
-            m_diags.error(loc, key,
-                          fmt::format("'{}' is not allowed{}; allowed: {}", v, didYouMean(v, allowed),
-                                      joinList(allowed)));
+        checkOneOf(m_diags, loc, key, v, allowed);
     }
     Diagnostics& diags() { return m_diags; }
 
