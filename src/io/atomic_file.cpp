@@ -11,29 +11,24 @@ namespace granulab::io {
 AtomicFile::AtomicFile(std::string path) : m_path(std::move(path)), m_tmp(m_path + ".tmp") {
     const std::filesystem::path parent = std::filesystem::path(m_path).parent_path();
     if (!parent.empty()) std::filesystem::create_directories(parent);
-    m_file = std::fopen(m_tmp.c_str(), "wb");
-    if (!m_file) throw std::runtime_error("cannot write " + m_tmp);
+    m_out.open(m_tmp, std::ios::binary | std::ios::trunc);
+    if (!m_out) throw std::runtime_error("cannot write " + m_tmp);
 }
 
 AtomicFile::~AtomicFile() {
-    if (!m_file) return;
-    std::fclose(m_file);
+    if (m_committed) return;
+    m_out.close();
     std::error_code ignored;
     std::filesystem::remove(m_tmp, ignored);
 }
 
-void AtomicFile::write(const std::string& text) {
-    std::fwrite(text.data(), 1, text.size(), m_file);
-}
-
 void AtomicFile::commit() {
-    const bool ok = std::ferror(m_file) == 0;
-    const bool closed = std::fclose(m_file) == 0;
-    m_file = nullptr;
-    if (!ok || !closed) throw std::runtime_error("write failed: " + m_tmp);
+    m_out.close();
+    if (!m_out) throw std::runtime_error("write failed: " + m_tmp);
     std::error_code ec;
     std::filesystem::rename(m_tmp, m_path, ec);
     if (ec) throw std::runtime_error("cannot write " + m_path + ": " + ec.message());
+    m_committed = true;
 }
 
 void writeFileAtomically(const std::string& path, const std::string& text) {

@@ -3,7 +3,7 @@
 // to it, renamed into place when complete, so that an interrupted run never leaves a half-written
 // file under a final name.
 #pragma once
-#include <cstdio>
+#include <fstream>
 #include <string>
 
 namespace granulab::io {
@@ -12,21 +12,25 @@ namespace granulab::io {
 /// (an exception on the way), it removes the temporary and leaves `path` as it was.
 class AtomicFile {
 public:
-    /// Opens `path`.tmp for writing (binary); creates the parent folder. Throws
+    /// Opens `path`.tmp for writing (binary, truncated); creates the parent folder. Throws
     /// std::runtime_error naming the file when it cannot.
     explicit AtomicFile(std::string path);
     ~AtomicFile();
     AtomicFile(const AtomicFile&) = delete;
     AtomicFile& operator=(const AtomicFile&) = delete;
 
-    std::FILE* handle() noexcept { return m_file; }
-    void write(const std::string& text);
+    /// The open temporary file (binary; seekable, e.g. to patch a length written before).
+    std::ostream& stream() noexcept { return m_out; }
+    void write(const std::string& text) {
+        m_out.write(text.data(), static_cast<std::streamsize>(text.size()));
+    }
     /// Closes, checks for write errors and renames into place; throws std::runtime_error.
     void commit();
 
 private:
     std::string m_path, m_tmp;
-    std::FILE* m_file = nullptr;
+    std::ofstream m_out;
+    bool m_committed = false;
 };
 
 /// Writes `text` to `path` through AtomicFile.

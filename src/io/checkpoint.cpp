@@ -4,11 +4,11 @@
 
 #include <fmt/format.h>
 
-#include <filesystem>
 #include <fstream>
 #include <stdexcept>
 
 #include "core/binary_io.hpp"
+#include "io/atomic_file.hpp"
 
 namespace granulab::io {
 
@@ -38,31 +38,27 @@ std::uint64_t fingerprint(const SceneIdentity& identity) {
 
 void writeCheckpoint(const std::string& dir, const CheckpointHeader& header,
                      const std::function<void(std::ostream&)>& saveEngine) {
-    const std::string path = dir + "/checkpoint.bin", tmp = path + ".tmp";
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out) throw std::runtime_error("cannot write " + tmp);
-        writePod(out, kMagic);
-        writePod(out, kCheckpointVersion);
-        writeString(out, header.engine);
-        writePod<std::uint64_t>(out, header.identity.size());
-        for (const auto& e : header.identity) {
-            writeString(out, e.key);
-            writeString(out, e.value);
-        }
-        writePod(out, fingerprint(header.identity));
-        writePod(out, header.bookkeeping.nextSnapshot);
-        const auto lengthAt = out.tellp();
-        writePod<std::uint64_t>(out, 0);  // blob length, patched below
-        const auto blobStart = out.tellp();
-        saveEngine(out);
-        const auto blobEnd = out.tellp();
-        out.seekp(lengthAt);
-        writePod<std::uint64_t>(out, static_cast<std::uint64_t>(blobEnd - blobStart));
-        out.seekp(blobEnd);
-        if (!out) throw std::runtime_error("write failed: " + tmp);
+    AtomicFile file(dir + "/checkpoint.bin");
+    std::ostream& out = file.stream();
+    writePod(out, kMagic);
+    writePod(out, kCheckpointVersion);
+    writeString(out, header.engine);
+    writePod<std::uint64_t>(out, header.identity.size());
+    for (const auto& e : header.identity) {
+        writeString(out, e.key);
+        writeString(out, e.value);
     }
-    std::filesystem::rename(tmp, path);
+    writePod(out, fingerprint(header.identity));
+    writePod(out, header.bookkeeping.nextSnapshot);
+    const auto lengthAt = out.tellp();
+    writePod<std::uint64_t>(out, 0);  // blob length, patched below
+    const auto blobStart = out.tellp();
+    saveEngine(out);
+    const auto blobEnd = out.tellp();
+    out.seekp(lengthAt);
+    writePod<std::uint64_t>(out, static_cast<std::uint64_t>(blobEnd - blobStart));
+    out.seekp(blobEnd);
+    file.commit();
 }
 
 RunBookkeeping readCheckpoint(const std::string& dir, const CheckpointHeader& expected,

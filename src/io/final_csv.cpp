@@ -40,7 +40,7 @@ void FinalCsvWriter::row(const FinalCsvParticle& p) {
 
 void FinalCsvWriter::endRow() {
     m_line.push_back('\n');
-    std::fwrite(m_line.data(), 1, m_line.size(), m_file.handle());
+    m_file.stream().write(m_line.data(), static_cast<std::streamsize>(m_line.size()));
 }
 
 }  // namespace granulab::io
