@@ -43,21 +43,19 @@ const EngineEntry& engineOf(const model::SceneDef& scene) {
                        fmt::format("unknown engine '{}'; allowed: {}", scene.run.engine, engineNamesText())));
 }
 
-namespace {
-std::vector<io::SceneSections> sectionReaders() {
+std::vector<io::SceneSections> sceneSections() {
     std::vector<io::SceneSections> list;
     for (const auto& e : engineTable()) list.push_back(e.sections());
     return list;
 }
-}  // namespace
 
 model::SceneDef readScene(const std::string& path, const std::vector<io::Override>& overrides) {
-    return io::readScene(path, overrides, sectionReaders());
+    return io::readScene(path, overrides, sceneSections());
 }
 
 model::SceneDef readSceneText(const std::string& text, const std::string& path,
                               const std::vector<io::Override>& overrides) {
-    return io::readSceneText(text, path, overrides, sectionReaders());
+    return io::readSceneText(text, path, overrides, sceneSections());
 }
 
 }  // namespace granulab::app

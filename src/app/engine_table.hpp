@@ -41,6 +41,9 @@ const EngineEntry& engineOf(const model::SceneDef& scene);
 /// "dem, edmd" (for messages).
 std::string engineNamesText();
 
+/// The scene-section readers of every engine in the table, in table order.
+std::vector<io::SceneSections> sceneSections();
+
 /// Reads a scene file with the sections of every engine in the table; SceneError lists every
 /// problem. readSceneText: the same from a string (`path` only names it in messages).
 model::SceneDef readScene(const std::string& path, const std::vector<io::Override>& overrides);

@@ -12,9 +12,7 @@ namespace granulab::test {
 
 /// The section readers of every engine, from the engine table.
 inline std::vector<io::SceneSections> sceneSections() {
-    std::vector<io::SceneSections> list;
-    for (const auto& e : app::engineTable()) list.push_back(e.sections());
-    return list;
+    return app::sceneSections();
 }
 
 inline model::SceneDef readSceneText(const std::string& text, const std::string& path = "test.toml",
