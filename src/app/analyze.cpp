@@ -44,8 +44,8 @@ int analyzeCommand(const AnalyzeOptions& opt) {
     if (entry == nullptr)
         badInput(summaryPath, fmt::format("engine '{}' is not one of {}", engine, engineNamesText()));
     if (entry->analyze == nullptr)
-        badInput(summaryPath, fmt::format("`granulab analyze` has no analyses of {} runs yet ({}: {})",
-                                          engine, engine, entry->analyzeLater));
+        badInput(summaryPath, fmt::format("`granulab analyze` has no analyses of {} runs yet; {}", engine,
+                                          entry->analyzeLater));
     return entry->analyze(opt, summary);
 }
 

@@ -17,7 +17,7 @@ const std::vector<EngineEntry>& engineTable() {
     static const std::vector<EngineEntry> table = {
         {"dem", "time-driven soft-particle DEM in 2D: disks and convex polygons (gc2d, cfddem)",
          io::demSceneSections, makeDemSimulation, demInfo, nullptr,
-         "stress, density and repose analyses of dem runs come with a later version"},
+         "stress, density and repose analyses come with a later version"},
         {"edmd", "event-driven MD of inelastic hard disks and spheres (edmd)", io::edmdSceneSections,
          makeEdmdSimulation, edmdInfo, edmdAnalyze, ""},
     };
