@@ -8,14 +8,22 @@
 #include <cmath>
 
 #include "app/engine_table.hpp"
+#include "app/simulation_options.hpp"
 #include "dem/contact/hertz_restitution.hpp"
 #include "dem/contact/registry.hpp"
+#include "io/scene_override.hpp"
 
 namespace granulab::app {
 
 int infoCommand(const std::string& scenePath, const std::vector<io::Override>& overrides) {
-    const model::SceneDef scene = app::readScene(scenePath, overrides);
-    return engineOf(scene).info(scenePath, scene);
+    return io::withOverrideLocations(overrides, [&] {
+        const model::SceneDef scene = app::readScene(scenePath, overrides);
+        const EngineEntry& engine = engineOf(scene);
+        // Everything `run` does before its first step (placement, cells, the engine's own
+        // checks), so that info fails exactly where run would; then the report.
+        engine.build(scene, {scenePath, true});
+        return engine.info(scenePath, scene);
+    });
 }
 
 std::string helpText(const std::string& topic) {

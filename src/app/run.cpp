@@ -8,7 +8,9 @@
 
 #include "app/engine_table.hpp"
 #include "app/run_loop.hpp"
+#include "app/simulation_options.hpp"
 #include "core/timer.hpp"
+#include "io/scene_override.hpp"
 
 namespace granulab::app {
 
@@ -20,9 +22,13 @@ std::string defaultOutDir(const std::string& scenePath) {
 
 int runCommand(const RunOptions& opt) {
     const double startWall = wallSeconds();
-    const model::SceneDef scene = app::readScene(opt.scene, opt.overrides);  // SceneError -> exit 2 in main
+    // SceneError -> exit 2 in main; problems of --set values are located at the --set.
+    const model::SceneDef scene =
+        io::withOverrideLocations(opt.overrides, [&] { return app::readScene(opt.scene, opt.overrides); });
     const EngineEntry& engine = engineOf(scene);
-    const std::unique_ptr<Simulation> sim = engine.build(scene, {opt.scene, opt.quiet});
+    const std::unique_ptr<Simulation> sim = io::withOverrideLocations(opt.overrides, [&] {
+        return engine.build(scene, {opt.scene, opt.quiet});
+    });
     for (const auto& w : sim->warnings()) fmt::print(stderr, "warning: {}\n", w);
     const std::string dir = !opt.outDir.empty()
                                 ? opt.outDir

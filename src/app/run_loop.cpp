@@ -92,10 +92,11 @@ int runSimulation(Simulation& sim, const model::SceneDef& scene, const RunContex
     io::RunBookkeeping book;
     std::string lastCheckpoint =
         "No checkpoint was written before the failure (see output.checkpoint_interval).";
-    if (resumed)
+    if (resumed) {
         book = resume(sim, ctx, lastCheckpoint);
-    else
-        sim.start();
+    } else if (const std::uint32_t started = sim.start(); started != kSimOk) {
+        return finishRun(sim, ctx, {started, {}, lastCheckpoint, 0});
+    }
     for (Trigger* t : {&end, &series, &snapshots, &checkpoints, &progressTick, &benchmark})
         t->seek(sim.time(), sim.count());
     if (resumed && !(end.next() < std::numeric_limits<double>::infinity()))
@@ -137,6 +138,10 @@ int runSimulation(Simulation& sim, const model::SceneDef& scene, const RunContex
         benchmarkCount = sim.count();
     }
     std::uint32_t status = kSimOk;
+    constexpr int kMaxIdleStops = 1000;
+    int idleStops = 0;
+    double lastTime = sim.time();
+    std::uint64_t lastCount = sim.count();
     for (;;) {
         Stop stop;
         for (const Trigger* t : {&end, &series, &snapshots, &checkpoints, &progressTick, &benchmark})
@@ -145,6 +150,15 @@ int runSimulation(Simulation& sim, const model::SceneDef& scene, const RunContex
         if (status != kSimOk) break;
         const double t = sim.time();
         const std::uint64_t c = sim.count();
+        // The loop's own watchdog: stops that move neither the clock nor the count, over and over,
+        // can never reach the end (the engines watch their own inner loops).
+        idleStops = (t == lastTime && c == lastCount) ? idleStops + 1 : 0;
+        if (idleStops > kMaxIdleStops) {
+            status = kSimStalled;
+            break;
+        }
+        lastTime = t;
+        lastCount = c;
         if (benchmark.reached(t, c) && benchmarkStart < 0) {
             benchmarkStart = wallSeconds();
             benchmarkCount = c;

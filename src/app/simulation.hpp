@@ -23,6 +23,8 @@ enum SimStatus : std::uint32_t {
     kSimNonFinite = 1u << 0,  ///< a position, velocity or energy became NaN or infinite
     kSimUnstable = 1u << 1,   ///< tunnelling or an unphysical step (engine-specific diagnosis)
     kSimOverlap = 1u << 2,    ///< particles interpenetrate beyond the engine's tolerance
+    kSimStalled =
+        1u << 3,  ///< the watchdog saw no progress (a clock standing still, a pre-run that cannot end)
 };
 
 /// Where an advance stops: at simulated time `time` [s] or when the engine's count (steps,
@@ -96,8 +98,9 @@ public:
 
     // ---- the run ---------------------------------------------------------------------------
     virtual RunPlan plan() const = 0;
-    /// A fresh run's preparation before the t = 0 outputs (edmd: elastic pre-run).
-    virtual void start() = 0;
+    /// A fresh run's preparation before the t = 0 outputs (edmd: elastic pre-run); returns
+    /// SimStatus flags (a pre-run that cannot finish: kSimStalled).
+    virtual std::uint32_t start() = 0;
     /// Called once before the loop (fresh or resumed), after the t = 0 outputs.
     virtual void beginLoop() = 0;
     /// Runs until `stop`; returns SimStatus flags (kSimOk when the stop was reached).

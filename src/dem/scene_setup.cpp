@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/limits.hpp"
 #include "core/suggest.hpp"
 #include "dem/broad_phase.hpp"
 #include "dem/integrator.hpp"
@@ -107,7 +108,80 @@ void checkStartOverlaps(const model::SceneDef& scene, const InitialParticles& in
     }
 }
 
+/// Particles the scene asks for, before generating any: explicit ones, random blocks' counts,
+/// lattice blocks' counts or their region / spacing estimate (may be inf).
+double plannedParticles(const model::SceneDef& scene) {
+    double n = static_cast<double>(scene.particles.size());
+    for (const auto& b : scene.blocks) {
+        if (b.count >= 0 || b.lattice == model::BlockDef::Lattice::Random) {
+            n += static_cast<double>(std::max<std::int64_t>(b.count, 0));
+        } else if (b.spacing > 0 && b.xmax > b.xmin && b.ymax > b.ymin) {
+            n += (b.xmax - b.xmin + b.spacing) / b.spacing * ((b.ymax - b.ymin + b.spacing) / b.spacing);
+        }
+    }
+    return n;
+}
+
+/// The particle count and its memory fit this machine (before generation allocates anything).
+void checkParticleBudget(const model::SceneDef& scene, Diagnostics& d) {
+    const double n = plannedParticles(scene);
+    const SourceLoc& where = scene.blocks.empty() ? SourceLoc{scene.path, 0, 0} : scene.blocks.front().loc;
+    if (n > kMaxParticleCount) {
+        d.error(where, "block",
+                fmt::format("the scene asks for about {:.3g} particles; allowed at most {:.0f} (32-bit ids)",
+                            n, kMaxParticleCount));
+        return;
+    }
+    checkMemoryFits(d, where, "block", n * kDiskBytesPerParticle, fmt::format("{:.3g} particles", n));
+}
+
+/// Every particle has a positive finite mass and sits where double precision resolves its size:
+/// the coordinate step at |x| must stay below 1e-8 of the radius, or contacts become round-off.
+void checkParticleNumbers(const model::SceneDef& scene, const InitialParticles& init, Diagnostics& d) {
+    const model::MassModel massModel = model::massModelOf(scene.dem.massModel);
+    std::size_t reported = 0;
+    const auto report = [&](const InitialParticle& p, const std::string& message) {
+        if (reported++ < 10) d.error(init.origins[p.origin], "particle", message);
+    };
+    for (std::size_t k = 0; k < init.particles.size(); ++k) {
+        const auto& p = init.particles[k];
+        const Real rho = scene.materials[p.material].density;
+        const Real m = initialMass(init, p, massModel, rho);
+        if (rho > 0 && !(m > 0 && std::isfinite(m) && m * p.radius * p.radius > 0 &&
+                         std::isfinite(m * p.radius * p.radius))) {
+            report(p,
+                   fmt::format("particle {}: mass {:.4g} kg (density {:.4g}, radius {:.4g} m) or its moment "
+                               "of inertia ~ m r^2 is zero or infinite in double precision; choose a radius "
+                               "and density whose mass and m r^2 are positive finite numbers",
+                               k, m, rho, p.radius));
+            continue;
+        }
+        const Real step = resolutionAt(std::max(std::abs(p.position.x), std::abs(p.position.y)));
+        if (!(step <= 1e-8 * p.radius))
+            report(p, fmt::format(
+                          "particle {} at ({:.6g}, {:.6g}) m: double precision resolves only {:.3g} m "
+                          "there, more than 1e-8 of its radius {:.4g} m; keep |x| and |y| below {:.3g} m "
+                          "(move the scene towards the origin)",
+                          k, p.position.x, p.position.y, step, p.radius, 4.5e7 * p.radius));
+    }
+    if (reported > 10)
+        d.error({scene.path, 0, 0}, "particle", fmt::format("... {} more not listed", reported - 10));
+}
+
 }  // namespace
+
+double bytesPerParticleEstimate(const InitialParticles& init) {
+    double corners = 0, polygons = 0;
+    for (const auto& p : init.particles)
+        if (p.shape != model::kDiskShape) {
+            corners += static_cast<double>(init.shapes.count[p.shape]);
+            ++polygons;
+        }
+    if (polygons == 0) return kDiskBytesPerParticle;
+    // Gear state (15 more columns), world corners, per-pair area and feature cache.
+    return kDiskBytesPerParticle + 15 * 8 + 16.0 * corners / static_cast<double>(init.particles.size()) + 4 +
+           3 * 18;
+}
 
 PreparedScene prepareScene(const model::SceneDef& scene, Diagnostics& diags) {
     const auto names = model::materialNames(scene);
@@ -115,8 +189,11 @@ PreparedScene prepareScene(const model::SceneDef& scene, Diagnostics& diags) {
     checkOneOf(diags, scene.dem.loc, "dem.broad_phase", scene.dem.broadPhase, broadPhaseNames());
     PreparedScene out;
     const LawTable laws = buildLawTable(scene, diags);
+    checkParticleBudget(scene, diags);
+    if (!diags.empty()) diags.throwIfAny();  // never generate what cannot fit
     out.initial = generateParticles(scene, names, diags);
     if (!diags.empty()) diags.throwIfAny();  // later checks need consistent materials and sizes
+    checkParticleNumbers(scene, out.initial, diags);
 
     const std::size_t nm = names.size();
     const model::MassModel massModel = model::massModelOf(scene.dem.massModel);

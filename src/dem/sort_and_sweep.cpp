@@ -94,7 +94,10 @@ void SortAndSweep::findPairs(const model::ParticleStore& s, Real margin, std::ve
         std::vector<std::uint32_t> active;
         for (const auto& e : m_xs) {
             if (e.isEnd) {
-                active.erase(std::find(active.begin(), active.end(), e.box));
+                // A box narrower than the coordinate resolution sorts its end before its begin
+                // (equal values); it overlaps nothing and was never made active.
+                if (const auto it = std::find(active.begin(), active.end(), e.box); it != active.end())
+                    active.erase(it);
                 continue;
             }
             for (const std::uint32_t other : active)

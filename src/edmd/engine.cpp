@@ -250,6 +250,21 @@ typename Engine<D, Queue>::V Engine<D, Queue>::minimumImage(V d) const noexcept 
 }
 
 template <int D, class Queue>
+typename Engine<D, Queue>::V Engine<D, Queue>::contactVector(const V& xi, const V& xj) const noexcept {
+    V r;
+    for (int k = 0; k < D; ++k) {
+        r[k] = xi[k] - xj[k];
+        if (!m_config.periodic[k]) continue;
+        const Real L = m_config.box[k];
+        if (r[k] > 0.5 * L)
+            r[k] = (xi[k] - L) - xj[k];
+        else if (r[k] < -0.5 * L)
+            r[k] = (xi[k] + L) - xj[k];
+    }
+    return r;
+}
+
+template <int D, class Queue>
 typename Engine<D, Queue>::V Engine<D, Queue>::separation(std::uint32_t i, std::uint32_t j) const noexcept {
     return minimumImage(positionNow(i) - positionNow(j));
 }
@@ -461,7 +476,12 @@ template <bool Growing, bool Uniform>
                                                         : m_radius[j]);
         const Real cc = dot(r, r) - sum * sum;
         if (!((b < 0) & (cc <= -b * bound))) return false;
-        const Real disc = b * b - dot(w, w) * cc;
+        const Real ww = dot(w, w);
+        // In contact, an approach below round-off of |r||w| is a grazing touch, not a collision:
+        // a collision that leaves the normal speed at zero (eps = 0) would else be found again
+        // at the same instant, forever (issue 11, case 2).
+        if (cc <= 0 && b * b <= kGrazing * kGrazing * dot(r, r) * ww) return false;
+        const Real disc = b * b - ww * cc;
         if (!(disc >= 0)) return false;                  // misses
         dt = cc <= 0 ? 0 : cc / (-b + std::sqrt(disc));  // as pairCollisionTime
         return true;
@@ -487,12 +507,13 @@ void Engine<D, Queue>::collide(std::uint32_t i, std::uint32_t j, Real t) noexcep
     advance(j, t);
     State& a = m_s[i];
     State& b = m_s[j];
-    const V r = minimumImage(a.x - b.x);
+    const V r = contactVector(a.x, b.x);
     const Real distance = std::sqrt(dot(r, r));
     const V k = r * (1 / distance);  // from j to i (erratum 1)
     const Real mi = massSlot(i), mj = massSlot(j);
-    // Approach speed of the surfaces: normal relative speed plus the growth of both radii.
-    const Real approach = -dot(a.v - b.v, k) + 2 * m_config.growthRate;
+    // Approach speed of the surfaces: normal relative speed plus the growth of both radii. From
+    // r itself (not k), so that its sign is the prediction's: -dot(r, w) = -b (pairTime).
+    const Real approach = -dot(a.v - b.v, r) / distance + 2 * m_config.growthRate;
     const bool tcElastic = elasticByTc(i, j, t);
     const Real eps = tcElastic ? 1 : m_config.restitution(std::abs(approach));
     const Real normalImpulse =
@@ -568,7 +589,7 @@ void Engine<D, Queue>::crossCell(std::uint32_t i, std::uint32_t face) noexcept {
 template <int D, class Queue>
 std::uint64_t Engine<D, Queue>::runUntil(Real tEnd) {
     const std::uint64_t done = run(tEnd, ~std::uint64_t{0});
-    m_now = std::max(m_now, tEnd);
+    if (m_stall == Stall::None) m_now = std::max(m_now, tEnd);
     return done;
 }
 
@@ -580,9 +601,33 @@ std::uint64_t Engine<D, Queue>::runCollisions(std::uint64_t collisions, Real tEn
 template <int D, class Queue>
 std::uint64_t Engine<D, Queue>::run(Real tEnd, std::uint64_t collisionLimit) {
     std::uint64_t done = 0;
+    m_stall = Stall::None;
+    // Progress watchdog (issue 11): within every window of events the clock must move by more
+    // than round-off (an inelastic collapse or jammed growing spheres collide forever at one
+    // instant); a collision-count run must also collide within 64 windows (a pre-run of
+    // particles that never meet). Cost: one comparison per event.
+    const bool byCollisions = collisionLimit != ~std::uint64_t{0};
+    const std::uint64_t window = watchdogWindow();
+    std::uint64_t watchEvents = m_stats.events + window, quietWindows = 0;
+    Real watchTime = m_now;
+    std::uint64_t watchCollisions = m_stats.collisions;
     while (size() > 0 && m_stats.collisions < collisionLimit) {
         const Real t = m_queue.topTime();
         if (!(t <= tEnd)) break;
+        if (m_stats.events >= watchEvents) {
+            if (!(m_now - watchTime > 1e-12 * std::abs(m_now))) {
+                m_stall = Stall::Clock;
+                break;
+            }
+            quietWindows = m_stats.collisions == watchCollisions ? quietWindows + 1 : 0;
+            if (byCollisions && quietWindows >= 64) {
+                m_stall = Stall::NoCollision;
+                break;
+            }
+            watchEvents = m_stats.events + window;
+            watchTime = m_now;
+            watchCollisions = m_stats.collisions;
+        }
         if (t > m_regridTime) {  // growing spheres reached the cell edge: rebuild, then go on
             m_now = m_regridTime;
             regrid();
@@ -639,6 +684,24 @@ void Engine<D, Queue>::restartClock() {
     m_stats = {};
     m_virial = 0;
     m_dissipated = 0;
+    buildCells();
+    sortParticles(false);
+    rescheduleAll();
+}
+
+template <int D, class Queue>
+void Engine<D, Queue>::setGrowthRate(Real u) {
+    if (u != 0)
+        for (int d = 0; d < D; ++d)
+            if (!m_config.periodic[d])
+                throw std::invalid_argument("edmd::Engine: growing spheres need a periodic box");
+    for (std::uint32_t s = 0; s < size(); ++s) advance(s, m_now);
+    // Rebase the time-0 radii so that a(t) = a0 + u t keeps its value now.
+    const Real shift = (m_config.growthRate - u) * m_now;
+    m_uniformRadius += shift;
+    for (auto& a : m_radius) a += shift;
+    m_maxRadius0 += shift;
+    m_config.growthRate = u;
     buildCells();
     sortParticles(false);
     rescheduleAll();
@@ -713,6 +776,7 @@ void Engine<D, Queue>::saveState(std::ostream& os) const {
     writePod(os, m_config.restitution);
     writePod(os, m_config.wallRestitution);
     writePod(os, m_config.tc);
+    writePod(os, m_config.growthRate);
     writeVector(os, m_s);
     writeVector(os, m_event);
     writeVector(os, m_cellOf);
@@ -748,6 +812,7 @@ void Engine<D, Queue>::loadState(std::istream& is) {
     m_config.restitution = readPod<Restitution>(is);
     m_config.wallRestitution = readPod<Real>(is);
     m_config.tc = readPod<Real>(is);
+    m_config.growthRate = readPod<Real>(is);
     const auto n = size();
     readVector(is, m_s);
     readVector(is, m_event);

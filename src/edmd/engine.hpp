@@ -47,6 +47,13 @@ struct EngineStats {
     std::uint64_t regrids = 0;    ///< cell grids rebuilt because growing spheres outgrew them
 };
 
+/// Why the last run() stopped short of its end (issue 11's progress watchdog).
+enum class Stall : std::uint8_t {
+    None,
+    Clock,        ///< the clock stood still over a window of events (collapse, jamming, a Zeno loop)
+    NoCollision,  ///< a collision-count run made no collision over a long window of events
+};
+
 template <int D, class Queue = CalendarQueue>
 class Engine {
 public:
@@ -58,14 +65,25 @@ public:
            std::vector<Real> mass);
 
     /// Executes events until the next one would be later than t_end [s]; afterwards time() is
-    /// t_end. Returns the events done.
+    /// t_end. Returns the events done. Stops early when stalled() (the clock stands still).
     std::uint64_t runUntil(Real tEnd);
     /// Executes events until `collisions` more collisions have happened or the next event would
-    /// be later than t_end; time() is then the time of the last event.
+    /// be later than t_end; time() is then the time of the last event. Stops early when
+    /// stalled() (the clock stands still, or no collision happens over a long window).
     std::uint64_t runCollisions(std::uint64_t collisions, Real tEnd = kNoEvent);
+    /// The watchdog's verdict on the last run (Stall::None: it reached its end). A stalled
+    /// engine keeps a consistent state at time(); running it again continues the stall.
+    Stall stalled() const noexcept { return m_stall; }
+    /// Events of one watchdog window: the clock must move within it (N-proportional, so that
+    /// any legitimate burst of simultaneous events fits; bounded, so a stall ends in seconds).
+    std::uint64_t watchdogWindow() const noexcept { return 16 * std::uint64_t{size()} + (1u << 17); }
     /// Elastic pre-run done (edmd spec 4.2 step 4): brings every particle to the current time,
     /// makes it time 0 and resets collision counters, TC clocks, statistics and accumulators.
     void restartClock();
+    /// Growing spheres (edmd spec 4.5) from now on at u [m/s] per radius (0: fixed radii): the
+    /// radii keep their current values, the cells and the schedule are rebuilt. Throws
+    /// std::invalid_argument for growth in a box that is not periodic on every axis.
+    void setGrowthRate(Real u);
     /// Replaces the collision rules (restitution, TC, roughness) from now on.
     void setCollisionRules(const Restitution& restitution, Real wallRestitution, Real tc);
 
@@ -135,6 +153,9 @@ private:
     static constexpr int kMaxCellsPerAxis = 65535;
     /// Events between two spatial sorts, in units of N (a sort costs about as much as N events).
     static constexpr std::uint64_t kSortEvery = 16;
+    /// Touching pairs approaching slower than this fraction of their relative speed graze
+    /// (round-off of r.w is ~1e-16 |r||w|; image shifts across a periodic box add ~1e-16 L/a).
+    static constexpr Real kGrazing = 1e-10;
 
     /// The particle whose next event is being predicted, brought to the current time.
     struct Subject {
@@ -198,6 +219,10 @@ private:
     void linkCell(std::uint32_t s) noexcept;
     void unlinkCell(std::uint32_t s) noexcept;
     V minimumImage(V d) const noexcept;
+    /// r_i - r_j of two stored positions through the same image arithmetic as the event
+    /// prediction ((x_i -/+ L) - x_j across a periodic boundary), so that a collision and its
+    /// prediction agree on the sign of the approach speed.
+    V contactVector(const V& xi, const V& xj) const noexcept;
     void rescheduleAll() noexcept;
     Real radiusSlot(std::uint32_t s) const noexcept {
         return (m_radius.empty() ? m_uniformRadius : m_radius[s]) + m_config.growthRate * m_now;
@@ -231,6 +256,7 @@ private:
     Real m_dissipated = 0;
     std::uint64_t m_nextSort = 0;  ///< value of m_stats.events at which the next spatial sort happens
     EngineStats m_stats;
+    Stall m_stall = Stall::None;
 };
 
 }  // namespace granulab::edmd

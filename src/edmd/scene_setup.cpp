@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "core/limits.hpp"
 #include "edmd/kinetic_theory.hpp"
 
 namespace granulab::edmd {
@@ -46,9 +47,33 @@ void resolveParticles(const Context& x, Setup& s, Diagnostics& d) {
     }
     Real volume = 1;
     for (int k = 0; k < D; ++k) volume *= box[k];
-    if (count == 0) count = static_cast<std::uint64_t>(std::llround(e.volumeFraction * volume / meanVolume));
-    if (count == 0 || count > (std::uint64_t{1} << 31))
-        d.error(loc, "edmd.count", fmt::format("resolves to {} particles; allowed [1, 2^31]", count));
+    // Every derived size must be a positive finite number (a radius of 1e300 or a fraction of
+    // 5e-324 overflows the box; issue 11).
+    if (!(meanVolume > 0 && std::isfinite(meanVolume) && volume > 0 && std::isfinite(volume))) {
+        const bool particleTooLarge = !(meanVolume > 0 && std::isfinite(meanVolume));
+        d.error(loc,
+                particleTooLarge ? "edmd.radius"
+                : e.box.empty()  ? "edmd.volume_fraction"
+                                 : "edmd.box",
+                fmt::format("radius {:.4g} m gives a particle volume of {:.4g} m^{} and the box edges of "
+                            "{:.4g} m (volume {:.4g} m^{}): outside the range of double precision; choose "
+                            "radius, count and volume fraction whose volumes are finite",
+                            std::max(e.radius, e.radiusMax), meanVolume, D, box[0], volume, D));
+        return;
+    }
+    const Real resolvedCount =
+        count > 0 ? static_cast<Real>(count) : std::round(e.volumeFraction * volume / meanVolume);
+    if (!(resolvedCount >= 1 && resolvedCount <= kMaxParticleCount)) {
+        d.error(loc, "edmd.count",
+                fmt::format("resolves to {:.6g} particles; allowed [1, {:.0f}] (ids are 32-bit)",
+                            resolvedCount, kMaxParticleCount));
+        return;
+    }
+
+    count = static_cast<std::uint64_t>(resolvedCount);
+    // Engine state, the initial-state arrays and the queue: about 160 (2D) / 220 (3D) bytes each.
+    checkMemoryFits(d, loc, "edmd.count", resolvedCount * (D == 2 ? 160.0 : 220.0),
+                    fmt::format("{} particles", count));
     s.volumeFraction = static_cast<Real>(count) * meanVolume / volume;
     if (s.volumeFraction >= (D == 2 ? 0.9069 : 0.7405))
         d.error(loc, "edmd.volume_fraction",
@@ -126,9 +151,32 @@ void resolveRunLength(const Context& x, Setup& s, Diagnostics& d) {
     s.endTime = sc.run.endTime > 0             ? sc.run.endTime
                 : e.endTau > 0 && s.lambda > 0 ? e.endTau * 2 * D * s.tE / s.lambda
                                                : std::numeric_limits<Real>::infinity();
-    s.endCollisions =
-        e.endCollisions > 0 ? static_cast<std::uint64_t>(std::llround(e.endCollisions * count / 2.0)) : 0;
-    s.equilibrationCollisions = static_cast<std::uint64_t>(std::llround(e.equilibrate * count / 2.0));
+    // Collision counts (per particle x N/2) and the run's clock scales must be representable.
+    const Real endCollisions = e.endCollisions > 0 ? std::round(e.endCollisions * count / 2.0) : 0;
+    const Real equilibration = std::round(e.equilibrate * count / 2.0);
+    if (!(endCollisions <= kExactIntegerLimit))
+        d.error(loc, "edmd.end_collisions",
+                fmt::format("{} per particle x {} particles / 2 = {:.3g} collisions; allowed at most 2^53",
+                            e.endCollisions, count, endCollisions));
+    if (count < 2 && e.equilibrate > 0)
+        d.error(loc, "edmd.equilibrate",
+                "a single particle has no partner for the elastic pre-run; set edmd.equilibrate = 0");
+    if (!(equilibration <= kExactIntegerLimit))
+        d.error(loc, "edmd.equilibrate",
+                fmt::format("{} per particle x {} particles / 2 = {:.3g} collisions; allowed at most 2^53",
+                            e.equilibrate, count, equilibration));
+    if (!(s.tE > 0 && std::isfinite(s.tE)) || !std::isfinite(static_cast<Real>(count) * e.temperature))
+        d.error(loc, "edmd.temperature",
+                fmt::format(
+                    "T = {:.4g} J with m = {:.4g} kg and {} particles gives a collision time t_E = {:.4g} s "
+                    "and a total energy N T = {:.4g} J; both must be finite and positive",
+                    e.temperature, e.mass, count, s.tE, static_cast<Real>(count) * e.temperature));
+    if (!(s.endTime > 0))
+        d.error(loc, "run.end_time",
+                fmt::format("the run's end resolves to t = {:.4g} s; it must be > 0", s.endTime));
+    s.endCollisions = endCollisions <= kExactIntegerLimit ? static_cast<std::uint64_t>(endCollisions) : 0;
+    s.equilibrationCollisions =
+        equilibration <= kExactIntegerLimit ? static_cast<std::uint64_t>(equilibration) : 0;
     if (e.growthRate < 0 && std::isfinite(s.endTime) && !(e.radius + e.growthRate * s.endTime > 0))
         d.error(
             loc, "edmd.growth_rate",
@@ -139,10 +187,30 @@ void resolveRunLength(const Context& x, Setup& s, Diagnostics& d) {
     Real amax = std::max(e.radius, e.radiusMax);
     if (e.growthRate > 0 && std::isfinite(s.endTime)) amax += e.growthRate * s.endTime;
     for (int k = 0; k < D; ++k)
-        if (c.periodic[k] && box[k] < 6 * amax)
+        if (c.periodic[k] && !(box[k] >= 6 * amax))
             d.error(loc, "edmd.box",
                     fmt::format("axis {}: the periodic edge {:.6g} m must hold 3 diameters ({:.6g} m){}", k,
                                 box[k], 6 * amax, e.growthRate > 0 ? " at the end of the growth" : ""));
+    // A cell size given by hand: at least the largest diameter, 3 cells per periodic axis, and
+    // fewer than 2^31 cells (the engine's cell heads are 32-bit and 4 bytes each).
+    if (e.cellSize > 0) {
+        Real cells = 1, smallest = kNoEvent;
+        for (int k = 0; k < D; ++k) {
+            cells *= std::min(std::floor(box[k] / e.cellSize), 65535.0);
+            if (c.periodic[k]) smallest = std::min(smallest, box[k]);
+        }
+        if (!(e.cellSize <= smallest / 3))
+            d.error(
+                loc, "edmd.cell_size",
+                fmt::format("{:.4g} m leaves fewer than 3 cells on a periodic axis of {:.6g} m; allowed (0, "
+                            "{:.6g}] m, or 0 (automatic)",
+                            e.cellSize, smallest, smallest / 3));
+        else if (!(cells < 2147483648.0))
+            d.error(loc, "edmd.cell_size",
+                    fmt::format(
+                        "{:.4g} m makes {:.3g} cells; allowed fewer than 2^31: raise it, or 0 (automatic)",
+                        e.cellSize, cells));
+    }
 }
 
 /// Warnings: inelastic collapse without the TC model (spec 4.3).
@@ -166,6 +234,7 @@ Setup resolveScene(const model::SceneDef& sc) {
     Setup s;
     s.dim = sc.run.dimension;
     resolveParticles(x, s, d);
+    d.throwIfAny();  // the rest needs a finite box and count
     configureEngine(x, s);
     resolveRunLength(x, s, d);
     d.throwIfAny();

@@ -109,12 +109,7 @@ void readContact(TableReader& r, model::ContactDef& c) {
             p.value = v.value<bool>().value_or(false) ? 1.0 : 0.0;
             p.isBool = true;
         } else if (v.is_number()) {
-            p.value = v.value<double>().value_or(0.0);
-            if (!std::isfinite(p.value)) {
-                r.diags().error(p.loc, r.keyPath(key),
-                                fmt::format("must be a finite number, got {}", p.value));
-                continue;
-            }
+            if (!r.number(key, p.value)) continue;  // finite, exact (reported there)
         } else {
             r.typeError(key, v, "a number or a boolean");
             continue;

@@ -41,7 +41,33 @@ Override parseOverride(const std::string& text) {
     const auto eq = text.find('=');
     if (eq == std::string::npos || eq == 0 || eq + 1 == text.size())
         throw SceneError(makeDiagnostic("--set", 0, text, "expected key=value, e.g. --set dem.dt=1e-5"));
-    return {text.substr(0, eq), text.substr(eq + 1)};
+    Override ov{text.substr(0, eq), text.substr(eq + 1)};
+    // Every segment named: no leading, trailing or doubled dot; indices closed and numeric.
+    const std::string& k = ov.key;
+    bool ok = k.front() != '.' && k.back() != '.' && k.find("..") == std::string::npos && k.front() != '[';
+    for (std::size_t p = k.find('['); ok && p != std::string::npos; p = k.find('[', p + 1)) {
+        const auto close = k.find(']', p);
+        ok = close != std::string::npos && close > p + 1 &&
+             k.find_first_not_of("0123456789", p + 1) == close &&
+             (close + 1 == k.size() || k[close + 1] == '.' || k[close + 1] == '[');
+    }
+    if (!ok || k.find_first_of(" \t") != std::string::npos)
+        throw SceneError(makeDiagnostic(
+            "--set " + text, 0, k,
+            "malformed key; expected section.key or section[index].key, e.g. dem.dt or block[0].count"));
+    return ov;
+}
+
+SceneError attributeToOverrides(const SceneError& error, const std::vector<Override>& overrides) {
+    std::vector<Diagnostic> diags = error.diagnostics();
+    for (auto& d : diags)
+        for (const auto& ov : overrides) {
+            const std::string& k = ov.key;
+            const bool about = d.key == k || (d.key.size() > k.size() && d.key.compare(0, k.size(), k) == 0 &&
+                                              (d.key[k.size()] == '.' || d.key[k.size()] == '['));
+            if (about) d.loc = {"--set " + k + "=" + ov.value, 0, 0};
+        }
+    return SceneError(std::move(diags));
 }
 
 void applyOverride(toml::table& root, const Override& ov, Diagnostics& diags) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "core/error.hpp"
 
@@ -15,7 +16,23 @@ struct Override {
     std::string value;  ///< TOML value text; a bare word is taken as a string
 };
 
-/// Parses `key=value`; throws SceneError on a malformed override.
+/// Parses `key=value`; throws SceneError on a malformed override (no '=', an empty key or value,
+/// an empty path segment such as "dem..dt", an unclosed or non-numeric [index]).
 Override parseOverride(const std::string& text);
+
+/// `error` with every diagnostic about an overridden key (the key itself or one inside it)
+/// located at its `--set key=value` instead of the scene line of its section.
+SceneError attributeToOverrides(const SceneError& error, const std::vector<Override>& overrides);
+
+/// Runs fn(); a SceneError leaving it names the `--set` of the keys it concerns.
+template <class Fn>
+auto withOverrideLocations(const std::vector<Override>& overrides, Fn&& fn) {
+    try {
+        return fn();
+    } catch (const SceneError& e) {
+        if (overrides.empty()) throw;
+        throw attributeToOverrides(e, overrides);
+    }
+}
 
 }  // namespace granulab::io

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <optional>
 
 #include "core/suggest.hpp"
 
@@ -37,6 +38,31 @@ std::string typeName(const toml::node& n) {
     }
 }
 
+namespace {
+
+constexpr std::int64_t kExactInteger = std::int64_t{1} << 53;  ///< integers a double holds exactly
+
+/// A number node's value: floats as they are, integers only where a double holds them exactly
+/// (toml++ returns nothing for the others, which used to read as 0).
+std::optional<double> exactNumber(const toml::node& n) {
+    if (const auto* i = n.as_integer()) {
+        const std::int64_t v = i->get();
+        if (v > kExactInteger || v < -kExactInteger) return std::nullopt;
+        return static_cast<double>(v);
+    }
+    if (const auto* f = n.as_floating_point()) return f->get();
+    return std::nullopt;
+}
+
+std::string inexactIntegerMessage(const toml::node& n) {
+    return fmt::format(
+        "the integer {} has no exact floating-point value (|n| > 2^53); write it as a float "
+        "(e.g. {:.17g}) if the nearest value is meant",
+        n.as_integer()->get(), static_cast<double>(n.as_integer()->get()));
+}
+
+}  // namespace
+
 const toml::node* TableReader::node(const std::string& key) {
     m_known.push_back(key);
     return m_table.get(key);
@@ -53,7 +79,12 @@ bool TableReader::number(const std::string& key, Real& out) {
         typeError(key, *n, "a number");
         return false;
     }
-    const Real v = n->value<double>().value_or(0.0);
+    const auto exact = exactNumber(*n);
+    if (!exact) {
+        m_diags.error(locOf(*n, m_file), keyPath(key), inexactIntegerMessage(*n));
+        return false;
+    }
+    const Real v = *exact;
     if (!std::isfinite(v)) {
         m_diags.error(locOf(*n, m_file), keyPath(key), fmt::format("must be a finite number, got {}", v));
         return false;
@@ -65,11 +96,24 @@ bool TableReader::number(const std::string& key, Real& out) {
 bool TableReader::integer(const std::string& key, std::int64_t& out) {
     const toml::node* n = node(key);
     if (!n) return false;
+    if (const auto* f = n->as_floating_point()) {  // 1e6 is a count too, if it is a whole number
+        const double v = f->get();
+        if (!(std::abs(v) <= static_cast<double>(kExactInteger)) || v != std::floor(v)) {
+            m_diags.error(
+                locOf(*n, m_file), keyPath(key),
+                fmt::format("expected an integer, got {} (whole numbers up to 2^53 may be written as "
+                            "floats, e.g. 1e6)",
+                            v));
+            return false;
+        }
+        out = static_cast<std::int64_t>(v);
+        return true;
+    }
     if (!n->is_integer()) {
         typeError(key, *n, "an integer");
         return false;
     }
-    out = n->value<std::int64_t>().value_or(0);
+    out = n->as_integer()->get();
     return true;
 }
 
@@ -119,8 +163,12 @@ bool TableReader::numbers(const std::string& key, std::vector<Real>& out, std::s
     }
     out.clear();
     for (const auto& e : *a) {
-        const auto v = e.value<double>();
-        if (!e.is_number() || !v || !std::isfinite(*v)) {
+        const auto v = exactNumber(e);
+        if (e.is_integer() && !v) {
+            m_diags.error(locOf(e, m_file), keyPath(key), inexactIntegerMessage(e));
+            return false;
+        }
+        if (!v || !std::isfinite(*v)) {
             m_diags.error(locOf(e, m_file), keyPath(key), "expected finite numbers in the array");
             return false;
         }
@@ -152,13 +200,14 @@ bool TableReader::points(const std::string& key, std::vector<Vec2>& out) {
             ok = false;
             continue;
         }
-        const Real x = (*pt)[0].value<double>().value_or(0), y = (*pt)[1].value<double>().value_or(0);
-        if (!std::isfinite(x) || !std::isfinite(y)) {
-            m_diags.error(locOf(e, m_file), keyPath(key), "points must be finite");
+        const auto x = exactNumber((*pt)[0]), y = exactNumber((*pt)[1]);
+        if (!x || !y || !std::isfinite(*x) || !std::isfinite(*y)) {
+            m_diags.error(locOf(e, m_file), keyPath(key),
+                          "points must be finite numbers (integers at most 2^53 in magnitude)");
             ok = false;
             continue;
         }
-        out.push_back({x, y});
+        out.push_back({*x, *y});
     }
     return ok;
 }

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <map>
 
+#include "core/limits.hpp"
 #include "core/suggest.hpp"
 #include "geom/polygon.hpp"
 #include "geom/segment.hpp"
@@ -79,6 +80,11 @@ void checkStatic(const model::SceneDef& sc, Checker& c, const std::vector<std::s
     if (sc.dem.dt > 0 && sc.run.endTime > 0 && sc.dem.dt > sc.run.endTime)
         d.error(sc.dem.loc, "dem.dt",
                 fmt::format("dt = {} s exceeds run.end_time = {} s", sc.dem.dt, sc.run.endTime));
+    if (sc.dem.dt > 0 && sc.run.endTime > 0 && !(sc.run.endTime / sc.dem.dt <= kExactIntegerLimit))
+        d.error(sc.run.loc, "run.end_time",
+                fmt::format("run.end_time / dem.dt = {:.3g} / {:.3g} = {:.3g} steps; allowed at most 2^53 = "
+                            "{:.4g} steps (the clock t = step dt must resolve one step)",
+                            sc.run.endTime, sc.dem.dt, sc.run.endTime / sc.dem.dt, kExactIntegerLimit));
     c.positive(sc.dem.loc, "dem.pc_tolerance", sc.dem.pcTolerance, "m/s^2");
     if (sc.dem.pcIterations < 0 || sc.dem.pcIterations > 1000)
         d.error(sc.dem.loc, "dem.pc_iterations",

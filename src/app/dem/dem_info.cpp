@@ -78,16 +78,7 @@ int demInfo(const std::string& scenePath, const model::SceneDef& scene) {
             "face dt      {:.4g} s with the flat-face stiffness E L_max/(r_in/2) of {}: advised for "
             "polygons\n",
             v.advice.faceAdvisedDt, v.advice.faceParticle);
-    // Estimate: particle store + Verlet half-step velocities (24 B) + neighbour-list reference
-    // positions (16 B) + cell grid (12 B) + ~3 candidate pairs per disk (16 B each, history included).
-    double perParticle = static_cast<double>(model::ParticleStore::kBytesPerParticle) + 24 + 16 + 12 + 3 * 16;
-    if (polygons) {  // Gear state (15 more columns), world corners, per-pair area and feature cache
-        std::size_t corners = 0;
-        for (const auto& p : ps)
-            if (p.shape != model::kDiskShape) corners += v.initial.shapes.count[p.shape];
-        perParticle +=
-            15 * 8 + 16.0 * static_cast<double>(corners) / static_cast<double>(ps.size()) + 4 + 3 * 18;
-    }
+    const double perParticle = dem::bytesPerParticleEstimate(v.initial);
     fmt::print(
         "memory       ~{:.3g} MB ({:.0f} bytes per particle, estimate; summary.json reports the measured "
         "value)\n",

@@ -68,7 +68,10 @@ public:
         return p;
     }
 
-    void start() override { m_world.initialize(); }
+    std::uint32_t start() override {
+        m_world.initialize();
+        return kSimOk;
+    }
     void beginLoop() override { m_loopStartStep = m_world.stepIndex(); }
 
     std::uint32_t advance(const Stop& stop) override {
@@ -96,6 +99,11 @@ public:
     }
 
     std::string diagnose(std::uint32_t status) const override {
+        if (status & kSimStalled)
+            return fmt::format(
+                "the run made no progress at t = {:.6g} s (step {}): the output stops no longer advance the "
+                "clock (an internal error; please report it with the scene).",
+                m_world.time(), m_world.stepIndex());
         std::vector<std::string> why;
         if (status & kSimNonFinite) why.push_back("a particle position or velocity became NaN/infinite");
         if (status & kSimUnstable)

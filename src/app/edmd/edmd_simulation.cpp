@@ -16,6 +16,7 @@
 #include "analysis/gas_structure.hpp"
 #include "analysis/gas_velocity.hpp"
 #include "app/edmd/edmd_engine.hpp"
+#include "app/progress.hpp"
 #include "app/simulation_options.hpp"
 #include "core/binary_io.hpp"
 #include "core/timer.hpp"
@@ -109,19 +110,37 @@ public:
         return p;
     }
 
-    void start() override {
+    std::uint32_t start() override {
         if (m_setup.equilibrationCollisions > 0) {
             if (!m_options.quiet)
                 fmt::print(stderr, "equilibrating: elastic pre-run of {} collisions per particle ...\n",
                            m_scene.edmd.equilibrate);
             const double t0 = wallSeconds();
-            m_engine.runCollisions(m_setup.equilibrationCollisions);
+            // In slices, so that the pre-run reports progress and its watchdog verdict.
+            const std::uint64_t total = m_setup.equilibrationCollisions;
+            Progress progress(static_cast<double>(total), m_options.quiet, "events", true);
+            const std::uint64_t slice = std::max<std::uint64_t>(1, total / 100);
+            for (std::uint64_t done = 0; done < total;) {
+                const std::uint64_t before = m_engine.stats().collisions;
+                m_engine.runCollisions(std::min(slice, total - done));
+                if (m_engine.stalled() != edmd::Stall::None) {
+                    m_stalledInPreRun = true;
+                    return kSimStalled;
+                }
+                done += m_engine.stats().collisions - before;
+                progress.update(static_cast<double>(done),
+                                static_cast<std::int64_t>(m_engine.stats().events));
+            }
+            progress.finish(static_cast<double>(total), static_cast<std::int64_t>(m_engine.stats().events));
             m_memory.equilibrationWall = wallSeconds() - t0;
         }
         m_engine.restartClock();
+        // The pre-run keeps the radii (the volume fraction at t = 0 is the scene's); growth starts now.
+        m_engine.setGrowthRate(m_setup.config.growthRate);
         m_engine.setCollisionRules(m_setup.config.restitution, m_setup.config.wallRestitution,
                                    m_setup.config.tc);
         m_memory.lastKinetic = m_engine.kineticEnergy();
+        return kSimOk;
     }
 
     void beginLoop() override {
@@ -140,7 +159,7 @@ public:
         } else {
             m_engine.runUntil(stop.time);
         }
-        return kSimOk;
+        return m_engine.stalled() == edmd::Stall::None ? kSimOk : kSimStalled;
     }
 
     /// A non-finite energy at a series row (a collision rule or a growth rate out of range).
@@ -148,7 +167,8 @@ public:
         return std::isfinite(m_engine.kineticEnergy() + m_engine.rotationalEnergy()) ? kSimOk : kSimNonFinite;
     }
 
-    std::string diagnose(std::uint32_t) const override {
+    std::string diagnose(std::uint32_t status) const override {
+        if (status & kSimStalled) return stallDiagnosis();
         return fmt::format(
             "the kinetic energy became NaN or infinite at t = {:.6g} s ({} collisions). Likely causes: a "
             "restitution model or growth rate outside its range, or overlapping particles at the start.",
@@ -254,6 +274,7 @@ private:
         edmd::EngineConfig elastic = m_setup.config;
         elastic.restitution = {};
         elastic.wallRestitution = 1;
+        elastic.growthRate = 0;  // the radii stay fixed in the pre-run (start() switches growth on)
         return Engine(elastic, std::move(state.x), std::move(state.v), std::move(state.radius),
                       std::move(state.mass));
     }
@@ -273,6 +294,43 @@ private:
         return end * static_cast<Real>(row) / static_cast<Real>(points);
     }
 
+    /// Why the watchdog stopped the engine (issue 11): what stood still, and the likely cause.
+    std::string stallDiagnosis() const {
+        const auto& E = m_scene.edmd;
+        const auto& st = m_engine.stats();
+        const std::string where = m_stalledInPreRun ? "in the elastic pre-run (edmd.equilibrate)" : "";
+        if (m_engine.stalled() == edmd::Stall::NoCollision)
+            return fmt::format(
+                "the run stalled {}: no collision in {} events at t = {:.6g} s ({} collisions so far); the "
+                "particles do not meet (too dilute a gas, or speeds near zero: edmd.temperature = {:g}). "
+                "Raise "
+                "the volume fraction or the temperature, or set edmd.equilibrate = 0.",
+                where, 64 * m_engine.watchdogWindow(), m_engine.time(), st.collisions, E.temperature);
+        std::string cause;
+        const Real thermalSpeed = std::sqrt(E.temperature / E.mass);
+        if (E.growthRate > 0)
+            cause = fmt::format(
+                "growing spheres jammed: the growth rate {:g} m/s is {:.3g} times the thermal speed "
+                "sqrt(T/m) = {:.3g} m/s, so the packing locks before the particles can rearrange; lower "
+                "edmd.growth_rate or raise edmd.temperature",
+                E.growthRate, E.growthRate / thermalSpeed, thermalSpeed);
+        else if (m_setup.config.tc == 0 && !m_stalledInPreRun)
+            cause =
+                "inelastic collapse (edmd spec 4.3): infinitely many collisions in finite time; switch the "
+                "TC "
+                "model on (remove edmd.tc = 0, or set edmd.tc > 0) or raise edmd.restitution";
+        else
+            cause = fmt::format(
+                "particles locked in contact (a collision sequence that does not end); a TC time t_c = "
+                "{:.3g} s "
+                "longer than the contact sequence, or a higher edmd.restitution, resolves it",
+                m_setup.config.tc);
+        return fmt::format(
+            "the run stalled {}: simulated time stood still at t = {:.6g} s for {} events ({} collisions so "
+            "far). Likely cause: {}.",
+            where, m_engine.time(), m_engine.watchdogWindow(), st.collisions, cause);
+    }
+
     analysis::PointSet snapshotPoints() const;
     /// The measurement at the current state, made once (cached until the engine moves on).
     Measurement& measure(bool clusters);
@@ -288,6 +346,7 @@ private:
     nlohmann::json m_lastRow;
     nlohmann::json m_theory;
     std::uint64_t m_eventsAtStart = 0, m_collisionsAtStart = 0;
+    bool m_stalledInPreRun = false;
 };
 
 template <int D, class Queue>
