@@ -58,11 +58,15 @@ public:
            std::vector<Real> mass);
 
     /// Executes events until the next one would be later than t_end [s]; afterwards time() is
-    /// t_end. Returns the events done.
+    /// t_end. Returns the events done. Both run calls stop early, after a whole event, when
+    /// interruptRequested() (core/interrupt.hpp, polled every 4096 events); then
+    /// interrupted() is true and time() is that of the last event.
     std::uint64_t runUntil(Real tEnd);
     /// Executes events until `collisions` more collisions have happened or the next event would
     /// be later than t_end; time() is then the time of the last event.
     std::uint64_t runCollisions(std::uint64_t collisions, Real tEnd = kNoEvent);
+    /// The last run call stopped early on SIGINT/SIGTERM.
+    bool interrupted() const noexcept { return m_interrupted; }
     /// Elastic pre-run done (edmd spec 4.2 step 4): brings every particle to the current time,
     /// makes it time 0 and resets collision counters, TC clocks, statistics and accumulators.
     void restartClock();
@@ -231,6 +235,7 @@ private:
     Real m_dissipated = 0;
     std::uint64_t m_nextSort = 0;  ///< value of m_stats.events at which the next spatial sort happens
     EngineStats m_stats;
+    bool m_interrupted = false;  ///< the last run() stopped on an interrupt request
 };
 
 }  // namespace granulab::edmd

@@ -117,6 +117,7 @@ public:
             const double t0 = wallSeconds();
             m_engine.runCollisions(m_setup.equilibrationCollisions);
             m_memory.equilibrationWall = wallSeconds() - t0;
+            if (m_engine.interrupted()) return;  // the run loop ends; a pre-run is not resumable
         }
         m_engine.restartClock();
         m_engine.setCollisionRules(m_setup.config.restitution, m_setup.config.wallRestitution,
@@ -140,7 +141,7 @@ public:
         } else {
             m_engine.runUntil(stop.time);
         }
-        return kSimOk;
+        return m_engine.interrupted() ? kSimInterrupted : kSimOk;
     }
 
     /// A non-finite energy at a series row (a collision rule or a growth rate out of range).
