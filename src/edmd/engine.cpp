@@ -780,12 +780,19 @@ void Engine<D, Queue>::loadState(std::istream& is) {
         throw std::runtime_error("checkpoint holds another number of particles");
     // Indices that the event loop follows without checks must point inside their arrays.
     std::size_t cellCount = 1;
-    for (int d = 0; d < D; ++d) cellCount *= m_cells[d] > 0 ? static_cast<std::size_t>(m_cells[d]) : 0;
-    if (!std::isfinite(m_now) || cellCount == 0 || m_head.size() != cellCount)
+    bool gridFine = true;
+    for (int d = 0; d < D; ++d) {
+        gridFine = gridFine && m_cells[d] > 0 && m_cells[d] <= kMaxCellsPerAxis && m_stride[d] == cellCount &&
+                   std::isfinite(m_cellEdge[d]) && m_cellEdge[d] > 0 && std::isfinite(m_invCellEdge[d]);
+        cellCount *= m_cells[d] > 0 ? static_cast<std::size_t>(m_cells[d]) : 0;
+    }
+    if (!std::isfinite(m_now) || !gridFine || cellCount == 0 || m_head.size() != cellCount)
         throw std::runtime_error("checkpoint corrupt (clock or cell grid)");
     for (std::uint32_t s = 0; s < n; ++s) {
         bool fine = std::isfinite(m_s[s].tst) && (m_s[s].next == kNone || m_s[s].next < n) &&
-                    (m_event[s].partner >= kMaxParticles || m_event[s].partner < n);
+                    (m_event[s].partner < n || m_event[s].partner == kNone ||
+                     (m_event[s].partner >= kWallBase && m_event[s].partner - kWallBase < 2 * D) ||
+                     (m_event[s].partner >= kCellBase && m_event[s].partner - kCellBase < 2 * D));
         for (int d = 0; d < D; ++d)
             fine = fine && std::isfinite(m_s[s].x[d]) && std::isfinite(m_s[s].v[d]) &&
                    m_cellOf[s][d] < m_cells[d];
