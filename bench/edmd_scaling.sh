@@ -52,7 +52,7 @@ printf "%10s %14s %16s %12s %12s\n" N events/s collisions/s "B/particle" "RSS B/
 for N in $SIZES; do
     # at least 2e6 timed collisions: raise the per-particle count for small N
     per=$(python3 -c "print(max($COLL, 4e6 / $N))")
-    "$GRANULAB" run "$WORK/gas.toml" --out "$WORK/out" -q --set edmd.count="$N" --set edmd.equilibrate="$EQUIL" \
+    "$GRANULAB" run "$WORK/gas.toml" --out "$WORK/out" --overwrite -q --set edmd.count="$N" --set edmd.equilibrate="$EQUIL" \
         --set edmd.end_collisions="$per" >/dev/null
     python3 - "$WORK/out/summary.json" "$OUT" "$DIM" "$NU" <<'PY'
 import json, sys

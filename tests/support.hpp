@@ -66,11 +66,14 @@ struct CommandResult {
     std::string output;  ///< stdout and stderr together
 };
 
-/// Runs the granulab binary with `args` (a shell fragment).
-inline CommandResult runGranulab(const std::string& args, const std::filesystem::path& workDir) {
+/// Runs the granulab binary with `args` (a shell fragment); with `timeoutSeconds` > 0 it is
+/// killed after that long (status 124: a hang fails the test instead of stalling the suite).
+inline CommandResult runGranulab(const std::string& args, const std::filesystem::path& workDir,
+                                 int timeoutSeconds = 0) {
     const auto log = workDir / "command.log";
-    const std::string cmd = std::string("cd '") + workDir.string() + "' && '" + GRANULAB_BINARY + "' " +
-                            args + " > '" + log.string() + "' 2>&1";
+    const std::string limit = timeoutSeconds > 0 ? "timeout " + std::to_string(timeoutSeconds) + " " : "";
+    const std::string cmd = std::string("cd '") + workDir.string() + "' && " + limit + "'" + GRANULAB_BINARY +
+                            "' " + args + " > '" + log.string() + "' 2>&1";
     const int raw = std::system(cmd.c_str());
     CommandResult r;
     r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;

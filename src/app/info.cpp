@@ -56,20 +56,29 @@ std::string helpText(const std::string& topic) {
     }
     return R"(granulab - granular matter simulation
 
-usage:
-  granulab run SCENE [--out DIR] [--set key=value]... [--resume DIR] [--quiet]
+usage (each command also has --help, with an example):
+  granulab run SCENE [--out DIR] [--set key=value]... [--resume DIR] [--overwrite] [--quiet]
       simulate; writes summary.json, series.csv, final.csv, VTK snapshots (snapshots.pvd)
-      and checkpoint.bin into DIR (default out/<scene name>)
+      and checkpoint.bin into DIR (default out/<scene name>). A folder that holds another
+      run's output is refused unless --overwrite (removes granulab's own files only);
+      --resume DIR continues DIR/checkpoint.bin and appends. Ctrl-C (SIGINT) or SIGTERM stops
+      after the current step or event, writes a checkpoint and prints how to resume.
   granulab info SCENE [--set key=value]...
       particles, materials, contact time, advised time step, memory estimate
   granulab render DIR --png [--width PIXELS]
       one PNG per snapshot of a finished or running simulation, into DIR/png/
+  granulab analyze DIR [--rmax RADII] [--bins N] [--delta D] [--per-bin N] [--quiet]
+      measure the final state of an edmd run: g(r), p(v), density, clusters (DIR/analysis/)
+  granulab master-equation [--lambda L] [--xi X] [--smax N] [--t-end T] [--points N] [--out PREFIX]
+      integrate the cluster-population master equation (PREFIX_moments.csv, ..._distributions.csv)
   granulab help [laws | restitution]
       this text, the table of contact laws and their parameters, or the e <-> D table
   granulab --version
 
-exit status: 0 success, 2 bad input (scene errors are listed with file:line),
-             3 run stopped because it became numerically unstable, 1 other failure.
+exit status: 0 success, 2 bad input (scene errors are listed with file:line; a damaged
+             checkpoint; an output folder of another run), 3 run stopped because it became
+             numerically unstable, 130 / 143 stopped by SIGINT / SIGTERM (resumable),
+             1 other failure.
 docs: docs/getting-started.md, docs/scene-format.md, docs/physics/contact-laws.md
 )";
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // granulab command line (CLI11): run, info, analyze, render, master-equation, help, --version.
-// Maps errors to exit codes (app/exit_codes.hpp): 2 bad input, 3 unstable run, 1 anything else.
+// Maps errors to exit codes (app/exit_codes.hpp): 2 bad input, 3 unstable run, 130/143 a run
+// stopped by SIGINT/SIGTERM (app/run_loop.cpp), 1 anything else.
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
@@ -27,13 +28,20 @@ int main(int argc, char** argv) {
     run->add_option("scene", runOpt.scene, "scene file (.toml)")->required();
     run->add_option("--out", runOpt.outDir, "output folder (default out/<scene name>)");
     run->add_option("--set", sets, "override a scene key: --set dem.dt=1e-5 (repeatable)")->take_all();
-    run->add_option("--resume", runOpt.resumeDir, "continue from DIR/checkpoint.bin");
+    run->add_option("--resume", runOpt.resumeDir, "continue from DIR/checkpoint.bin (appends to DIR)");
+    run->add_flag("--overwrite", runOpt.overwrite,
+                  "remove an earlier run's outputs from the output folder first (granulab's files only)");
     run->add_flag("--quiet,-q", runOpt.quiet, "no progress output");
+    run->footer(
+        "example: granulab run examples/disks_in_box.toml --set run.end_time=0.05 --out runs/short\n"
+        "Ctrl-C (SIGINT) or SIGTERM stops after the current step or event with a checkpoint; exit\n"
+        "status 130 / 143; continue with granulab run SCENE --resume DIR.");
 
     std::string infoScene;
     auto* info = cli.add_subcommand("info", "describe a scene: particles, advised time step, memory");
     info->add_option("scene", infoScene, "scene file")->required();
     info->add_option("--set", sets, "override a scene key")->take_all();
+    info->footer("example: granulab info examples/disks_in_box.toml --set dem.dt=2e-5");
 
     std::string renderDir;
     bool png = false;
@@ -44,6 +52,7 @@ int main(int argc, char** argv) {
     render->add_flag("--png", png, "write PNG pictures (DIR/png/)");
     render->add_option("--width", width, "picture width in pixels")->check(CLI::Range(64, 16384));
     render->add_flag("--quiet,-q", renderQuiet, "no messages");
+    render->footer("example: granulab render out/disks_in_box --png --width 800");
 
     app::AnalyzeOptions analyzeOpt;
     auto* analyze =
@@ -57,6 +66,7 @@ int main(int argc, char** argv) {
     analyze->add_option("--per-bin", analyzeOpt.particlesPerBin, "particles per density bin")
         ->check(CLI::Range(1.0, 1e9));
     analyze->add_flag("--quiet,-q", analyzeOpt.quiet, "no summary on the terminal");
+    analyze->footer("example: granulab analyze out/cooling_gas_2d --rmax 10 --bins 200");
 
     app::MasterEquationOptions meOpt;
     auto* master = cli.add_subcommand("master-equation",
@@ -75,10 +85,12 @@ int main(int argc, char** argv) {
     master->add_option("--t-end", meOpt.tEnd, "end time [1/alpha0]")->check(CLI::PositiveNumber);
     master->add_option("--points", meOpt.points, "output times (logarithmic)")->check(CLI::Range(2, 100000));
     master->add_option("--out", meOpt.out, "output prefix");
+    master->footer("example: granulab master-equation --lambda 4 --xi 2 --smax 50 --t-end 20 --out me");
 
     std::string helpTopic;
     auto* help = cli.add_subcommand("help", "usage, or `help laws` for the contact-law table");
     help->add_option("topic", helpTopic, "laws | restitution");
+    help->footer("example: granulab help laws");
 
     try {
         cli.parse(argc, argv);

@@ -3,16 +3,21 @@
 // stop each due output fires once, in the order series row, snapshot, checkpoint (series.csv is
 // flushed before a checkpoint, so a resumed run finds every row up to it). The end of the run
 // fires all three. Polled schedules fire at the first stop at or after their point.
+// SIGINT/SIGTERM (core/interrupt.hpp): the engine stops after a whole step or event, the loop
+// writes a series row and a checkpoint at that state, summary.json says "interrupted" with the
+// command that resumes, and the exit status is 128 + signal.
 #include "app/run_loop.hpp"
 
 #include <fmt/format.h>
 
 #include <filesystem>
+#include <utility>
 
 #include "app/exit_codes.hpp"
 #include "app/progress.hpp"
 #include "app/trigger.hpp"
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "core/timer.hpp"
 #include "io/csv_writers.hpp"
 #include "io/summary.hpp"
@@ -51,13 +56,30 @@ struct LoopOutcome {
     RunReport report;
     std::string lastCheckpoint;      ///< sentence naming the last good checkpoint
     std::size_t warningsBefore = 0;  ///< warnings already printed before the loop
+    bool resumable = true;           ///< interrupted: a checkpoint of this state was written
 };
 
+/// The lines of an interrupted run: where it stopped, what was written, how to go on.
+std::string interruptMessage(const Simulation& sim, const RunContext& ctx, bool resumable) {
+    const char* signal = signalName(interruptSignal());
+    if (!resumable)
+        return fmt::format(
+            "interrupted by {} during the preparation of the run (before t = 0); no checkpoint was "
+            "written: run the scene again",
+            signal);
+    return fmt::format(
+        "interrupted by {} at t = {:.6g} s: checkpoint.bin, a series row and summary.json written to "
+        "{}/\nresume with: {}",
+        signal, sim.time(), ctx.dir, ctx.resumeCommand);
+}
+
 /// The end of a run: warnings raised during it, final.csv (completed runs), summary.json, the
-/// diagnosis of a failure or the done message. Returns the exit status.
+/// diagnosis of a failure, the resume command of an interrupted run or the done message.
+/// Returns the exit status.
 int finishRun(Simulation& sim, const RunContext& ctx, const LoopOutcome& outcome) {
-    const auto& [status, report, lastCheckpoint, warningsBefore] = outcome;
+    const auto& [status, report, lastCheckpoint, warningsBefore, resumable] = outcome;
     const bool ok = status == kSimOk;
+    const bool interrupted = status == kSimInterrupted;
     const auto warnings = sim.warnings();
     for (std::size_t k = warningsBefore; k < warnings.size(); ++k)
         fmt::print(stderr, "warning: {}\n", warnings[k]);  // shown even with --quiet
@@ -65,8 +87,10 @@ int finishRun(Simulation& sim, const RunContext& ctx, const LoopOutcome& outcome
     io::SummaryCommon common;
     common.engine = ctx.engine;
     common.scene = ctx.scenePath;
-    common.completed = ok;
-    if (!ok) common.diagnosis = sim.diagnose(status) + " " + lastCheckpoint;
+    common.status =
+        ok ? io::RunStatus::Completed : (interrupted ? io::RunStatus::Interrupted : io::RunStatus::Unstable);
+    if (!ok && !interrupted) common.diagnosis = sim.diagnose(status) + " " + lastCheckpoint;
+    if (interrupted && resumable) common.resumeCommand = ctx.resumeCommand;
     common.particles = sim.particles();
     common.simTime = sim.time();
     common.wallTime = wallSeconds() - ctx.startWall;
@@ -74,6 +98,10 @@ int finishRun(Simulation& sim, const RunContext& ctx, const LoopOutcome& outcome
     common.memoryBytes = sim.memoryBytes();
     common.warnings = warnings;
     io::writeSummary(ctx.dir + "/summary.json", common, sim.summaryKeys(report));
+    if (interrupted) {
+        fmt::print(stderr, "\n{}\n", interruptMessage(sim, ctx, resumable));  // shown even with --quiet
+        return exitStatusOfSignal(interruptSignal());
+    }
     if (!ok) {
         fmt::print(stderr, "error: {}\n", common.diagnosis);
         return kExitUnstable;
@@ -92,10 +120,14 @@ int runSimulation(Simulation& sim, const model::SceneDef& scene, const RunContex
     io::RunBookkeeping book;
     std::string lastCheckpoint =
         "No checkpoint was written before the failure (see output.checkpoint_interval).";
+    installInterruptHandlers();  // from here on a signal stops the run cleanly (pre-run included)
     if (resumed) {
         book = resume(sim, ctx, lastCheckpoint);
-    } else if (const std::uint32_t started = sim.start(); started != kSimOk) {
-        return finishRun(sim, ctx, {started, {}, lastCheckpoint, 0});
+    } else if (std::uint32_t started = sim.start(); started != kSimOk || interruptRequested()) {
+        // A pre-run that stalled or was interrupted: nothing to resume from.
+        if (interruptRequested()) started = kSimInterrupted;
+        LoopOutcome outcome{started, {}, lastCheckpoint, sim.warnings().size(), false};
+        return finishRun(sim, ctx, outcome);
     }
     for (Trigger* t : {&end, &series, &snapshots, &checkpoints, &progressTick, &benchmark})
         t->seek(sim.time(), sim.count());
@@ -116,6 +148,9 @@ int runSimulation(Simulation& sim, const model::SceneDef& scene, const RunContex
         sim.snapshot(ctx.dir, static_cast<int>(book.nextSnapshot++), pvd);
         seriesFile.flush();
     };
+    // The state of the last series row, so that an interrupt does not repeat it (a resumed run's
+    // rows end at or before the checkpoint).
+    std::pair<double, std::uint64_t> rowState{sim.time(), sim.count()};
     if (!resumed) {
         seriesFile.row(sim.seriesRow());
         writeSnapshot();
@@ -171,6 +206,7 @@ int runSimulation(Simulation& sim, const model::SceneDef& scene, const RunContex
             const double t0 = wallSeconds();
             if (doSeries) {
                 seriesFile.row(sim.seriesRow());
+                rowState = {t, c};
                 status = sim.health();
                 if (status != kSimOk) break;
             }
@@ -187,6 +223,12 @@ int runSimulation(Simulation& sim, const model::SceneDef& scene, const RunContex
         progress.update(position(), static_cast<std::int64_t>(sim.progressCounter()));
         if (finished) break;
     }
+    if (status == kSimInterrupted) {  // a consistent state after a whole step or event
+        if (rowState != std::pair{sim.time(), sim.count()}) seriesFile.row(sim.seriesRow());
+        seriesFile.flush();
+        io::writeCheckpoint(ctx.dir, headerOf(ctx.engine, sim, book.nextSnapshot),
+                            [&](std::ostream& out) { sim.saveState(out); });
+    }
     const double loopEnd = wallSeconds();
     progress.finish(position(), static_cast<std::int64_t>(sim.progressCounter()));
     report.loopSeconds = loopEnd - loopStart;
@@ -195,7 +237,7 @@ int runSimulation(Simulation& sim, const model::SceneDef& scene, const RunContex
         report.benchmarkCount = sim.count() - benchmarkCount;
     }
 
-    return finishRun(sim, ctx, {status, report, lastCheckpoint, warningsBefore});
+    return finishRun(sim, ctx, {status, report, lastCheckpoint, warningsBefore, true});
 }
 
 }  // namespace granulab::app

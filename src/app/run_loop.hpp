@@ -14,14 +14,16 @@ namespace granulab::app {
 struct RunContext {
     std::string engine;  ///< name of the engine table row (checkpoint and summary.json)
     std::string scenePath;
-    std::string dir;        ///< output folder (exists)
-    std::string resumeDir;  ///< empty: a fresh run
+    std::string dir;            ///< output folder (exists)
+    std::string resumeDir;      ///< empty: a fresh run
+    std::string resumeCommand;  ///< the command line that resumes this run from `dir`
     bool quiet = false;
     double startWall = 0;  ///< [s] wallSeconds() when the command started
 };
 
-/// Runs `sim` to the end of its plan; returns the exit status (0, or 3 when it became
-/// unstable). Bad input (a foreign checkpoint, an end already reached) throws SceneError.
+/// Runs `sim` to the end of its plan; returns the exit status (0, 3 when it became unstable,
+/// 128 + signal when SIGINT/SIGTERM stopped it; core/interrupt.hpp). Bad input (a foreign or
+/// damaged checkpoint, an end already reached) throws SceneError.
 int runSimulation(Simulation& sim, const model::SceneDef& scene, const RunContext& context);
 
 }  // namespace granulab::app

@@ -17,14 +17,15 @@
 
 namespace granulab::app {
 
-/// Why an advance stopped early (bit flags; any of them ends the run with exit status 3).
+/// Why an advance stopped early (bit flags). kSimInterrupted ends the run cleanly with exit
+/// status 128 + signal (core/interrupt.hpp); any other flag ends it with exit status 3.
 enum SimStatus : std::uint32_t {
     kSimOk = 0,
-    kSimNonFinite = 1u << 0,  ///< a position, velocity or energy became NaN or infinite
-    kSimUnstable = 1u << 1,   ///< tunnelling or an unphysical step (engine-specific diagnosis)
-    kSimOverlap = 1u << 2,    ///< particles interpenetrate beyond the engine's tolerance
-    kSimStalled =
-        1u << 3,  ///< the watchdog saw no progress (a clock standing still, a pre-run that cannot end)
+    kSimNonFinite = 1u << 0,    ///< a position, velocity or energy became NaN or infinite
+    kSimUnstable = 1u << 1,     ///< tunnelling or an unphysical step (engine-specific diagnosis)
+    kSimOverlap = 1u << 2,      ///< particles interpenetrate beyond the engine's tolerance
+    kSimInterrupted = 1u << 3,  ///< SIGINT/SIGTERM: stopped after a whole step or event
+    kSimStalled = 1u << 4,      ///< no progress: a clock standing still, a pre-run that cannot end
 };
 
 /// Where an advance stops: at simulated time `time` [s] or when the engine's count (steps,
@@ -99,11 +100,14 @@ public:
     // ---- the run ---------------------------------------------------------------------------
     virtual RunPlan plan() const = 0;
     /// A fresh run's preparation before the t = 0 outputs (edmd: elastic pre-run); returns
-    /// SimStatus flags (a pre-run that cannot finish: kSimStalled).
+    /// SimStatus flags: kSimStalled for a pre-run that cannot finish, kSimInterrupted when
+    /// interruptRequested() (core/interrupt.hpp) stopped it; the run loop then ends.
     virtual std::uint32_t start() = 0;
     /// Called once before the loop (fresh or resumed), after the t = 0 outputs.
     virtual void beginLoop() = 0;
-    /// Runs until `stop`; returns SimStatus flags (kSimOk when the stop was reached).
+    /// Runs until `stop`; returns SimStatus flags (kSimOk when the stop was reached). Polls
+    /// interruptRequested() once per step or batch of events and returns kSimInterrupted, at a
+    /// state that a checkpoint resumes, when it is set.
     virtual std::uint32_t advance(const Stop& stop) = 0;
     /// Status after a series row (e.g. a non-finite energy); kSimOk by default.
     virtual std::uint32_t health() const { return kSimOk; }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Raw little-endian binary (de)serialisation of scalars and vectors, for checkpoints that
-// restore state bit for bit.
+// restore state bit for bit. Readers throw std::runtime_error on a truncated stream or a length
+// that does not fit the rest of it (never allocate for a damaged length).
 #pragma once
 #include <cstdint>
 #include <istream>
@@ -27,6 +28,23 @@ T readPod(std::istream& is) {
     return v;
 }
 
+/// Bytes left in `is` after the read position (the maximum when the stream cannot seek).
+inline std::uint64_t bytesLeft(std::istream& is) {
+    const auto here = is.tellg();
+    if (here < 0) return ~std::uint64_t{0};
+    is.seekg(0, std::ios::end);
+    const auto end = is.tellg();
+    is.seekg(here);
+    return end >= here ? static_cast<std::uint64_t>(end - here) : ~std::uint64_t{0};
+}
+
+/// Throws when `n` elements of `size` bytes cannot follow in `is`: a damaged length is refused
+/// before anything is allocated for it.
+inline void checkElementsFit(std::istream& is, std::uint64_t n, std::size_t size) {
+    if (n > (std::uint64_t{1} << 40) || n * size > bytesLeft(is))
+        throw std::runtime_error("checkpoint corrupt or truncated (a length exceeds the file)");
+}
+
 template <class T>
 void writeVector(std::ostream& os, const std::vector<T>& v) {
     writePod<std::uint64_t>(os, v.size());
@@ -36,7 +54,7 @@ void writeVector(std::ostream& os, const std::vector<T>& v) {
 template <class T>
 void readVector(std::istream& is, std::vector<T>& v) {
     const auto n = readPod<std::uint64_t>(is);
-    if (n > (std::uint64_t{1} << 40)) throw std::runtime_error("checkpoint corrupt (vector size)");
+    checkElementsFit(is, n, sizeof(T));
     v.resize(n);
     is.read(reinterpret_cast<char*>(v.data()), static_cast<std::streamsize>(n * sizeof(T)));
     if (!is) throw std::runtime_error("checkpoint truncated");
@@ -50,6 +68,7 @@ inline void writeString(std::ostream& os, const std::string& s) {
 inline std::string readString(std::istream& is) {
     const auto n = readPod<std::uint64_t>(is);
     if (n > (1u << 20)) throw std::runtime_error("checkpoint corrupt (string size)");
+    checkElementsFit(is, n, 1);
     std::string s(n, '\0');
     is.read(s.data(), static_cast<std::streamsize>(n));
     if (!is) throw std::runtime_error("checkpoint truncated");

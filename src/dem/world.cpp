@@ -199,13 +199,32 @@ void World::saveState(std::ostream& os) const {
 void World::loadState(std::istream& is) {
     if (readPod<std::uint64_t>(is) != kStateMagic) throw std::runtime_error("not a granulab DEM checkpoint");
     m_step = readPod<std::int64_t>(is);
+    const std::size_t particles = m_store.size();
     m_store.load(is);
     const auto& s = m_store;
+    if (s.size() != particles) throw std::runtime_error("checkpoint corrupt (particle count)");
+    for (const auto* col : {&s.x, &s.y, &s.vx, &s.vy, &s.angle, &s.omega, &s.radius, &s.mass, &s.invMass})
+        if (!std::all_of(col->begin(), col->end(), [](Real v) { return std::isfinite(v); }))
+            throw std::runtime_error(
+                "checkpoint corrupt (a particle position, velocity or mass is not finite)");
+    for (std::size_t k = 0; k < s.size(); ++k)
+        if (s.material[k] >= m_laws.materialCount() ||
+            (s.shape[k] != model::kDiskShape && s.shape[k] >= m_pool.size()) || !(s.radius[k] > 0))
+            throw std::runtime_error("checkpoint corrupt (particle material, shape or radius)");
     for (auto& sp : m_config.springs)  // slots of the restored (possibly re-sorted) store
         for (std::uint32_t k = 0; k < s.size(); ++k)
             if (s.id[k] == sp.id) sp.slot = k;
     readList(is, m_list.pairs);
     readList(is, m_list.wallPairs);
+    // Slots and segments index the arrays of the step: a damaged one must not reach it.
+    const auto indicesFit = [](const ContactList& l, std::size_t firstEnd, std::size_t secondEnd) {
+        return l.first.size() == l.second.size() &&
+               std::all_of(l.first.begin(), l.first.end(), [&](std::uint32_t k) { return k < firstEnd; }) &&
+               std::all_of(l.second.begin(), l.second.end(), [&](std::uint32_t k) { return k < secondEnd; });
+    };
+    if (!indicesFit(m_list.pairs, s.size(), s.size()) ||
+        !indicesFit(m_list.wallPairs, s.size(), m_walls.segments.size()))
+        throw std::runtime_error("checkpoint corrupt (contact list)");
     readVector(is, m_list.x0);
     readVector(is, m_list.y0);
     m_list.wallTime0 = readPod<Real>(is);

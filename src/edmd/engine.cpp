@@ -17,10 +17,15 @@
 
 #include "core/binary_io.hpp"
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 
 namespace granulab::edmd {
 
 namespace {
+/// Events between two polls of the interrupt flag (one load; the poll costs nothing measurable,
+/// and 4096 events take well under a millisecond).
+constexpr std::uint64_t kInterruptPoll = 4096;
+
 // Checkpoint I/O of vectors with any allocator (core/binary_io's take the default one).
 template <class T, class A>
 void writeVector(std::ostream& os, const std::vector<T, A>& v) {
@@ -31,7 +36,7 @@ void writeVector(std::ostream& os, const std::vector<T, A>& v) {
 template <class T, class A>
 void readVector(std::istream& is, std::vector<T, A>& v) {
     const auto n = readPod<std::uint64_t>(is);
-    if (n > (std::uint64_t{1} << 40)) throw std::runtime_error("checkpoint corrupt (vector size)");
+    checkElementsFit(is, n, sizeof(T));
     v.resize(n);
     is.read(reinterpret_cast<char*>(v.data()), static_cast<std::streamsize>(n * sizeof(T)));
     if (!is) throw std::runtime_error("checkpoint truncated");
@@ -589,7 +594,7 @@ void Engine<D, Queue>::crossCell(std::uint32_t i, std::uint32_t face) noexcept {
 template <int D, class Queue>
 std::uint64_t Engine<D, Queue>::runUntil(Real tEnd) {
     const std::uint64_t done = run(tEnd, ~std::uint64_t{0});
-    if (m_stall == Stall::None) m_now = std::max(m_now, tEnd);
+    if (m_stall == Stall::None && !m_interrupted) m_now = std::max(m_now, tEnd);
     return done;
 }
 
@@ -601,6 +606,7 @@ std::uint64_t Engine<D, Queue>::runCollisions(std::uint64_t collisions, Real tEn
 template <int D, class Queue>
 std::uint64_t Engine<D, Queue>::run(Real tEnd, std::uint64_t collisionLimit) {
     std::uint64_t done = 0;
+    m_interrupted = false;
     m_stall = Stall::None;
     // Progress watchdog (issue 11): within every window of events the clock must move by more
     // than round-off (an inelastic collapse or jammed growing spheres collide forever at one
@@ -612,6 +618,10 @@ std::uint64_t Engine<D, Queue>::run(Real tEnd, std::uint64_t collisionLimit) {
     Real watchTime = m_now;
     std::uint64_t watchCollisions = m_stats.collisions;
     while (size() > 0 && m_stats.collisions < collisionLimit) {
+        if ((done % kInterruptPoll) == 0 && interruptRequested()) {  // between whole events
+            m_interrupted = true;
+            break;
+        }
         const Real t = m_queue.topTime();
         if (!(t <= tEnd)) break;
         if (m_stats.events >= watchEvents) {
@@ -833,6 +843,33 @@ void Engine<D, Queue>::loadState(std::istream& is) {
     readVector(is, times);
     if (m_s.size() != n || times.size() != n || m_event.size() != n || id.size() != n || m_cellOf.size() != n)
         throw std::runtime_error("checkpoint holds another number of particles");
+    // Indices that the event loop follows without checks must point inside their arrays.
+    std::size_t cellCount = 1;
+    bool gridFine = true;
+    for (int d = 0; d < D; ++d) {
+        gridFine = gridFine && m_cells[d] > 0 && m_cells[d] <= kMaxCellsPerAxis && m_stride[d] == cellCount &&
+                   std::isfinite(m_cellEdge[d]) && m_cellEdge[d] > 0 && std::isfinite(m_invCellEdge[d]);
+        cellCount *= m_cells[d] > 0 ? static_cast<std::size_t>(m_cells[d]) : 0;
+    }
+    if (!std::isfinite(m_now) || !gridFine || cellCount == 0 || m_head.size() != cellCount)
+        throw std::runtime_error("checkpoint corrupt (clock or cell grid)");
+    for (std::uint32_t s = 0; s < n; ++s) {
+        bool fine = std::isfinite(m_s[s].tst) && (m_s[s].next == kNone || m_s[s].next < n) &&
+                    (m_event[s].partner < n || m_event[s].partner == kNone ||
+                     (m_event[s].partner >= kWallBase && m_event[s].partner - kWallBase < 2 * D) ||
+                     (m_event[s].partner >= kCellBase && m_event[s].partner - kCellBase < 2 * D));
+        for (int d = 0; d < D; ++d)
+            fine = fine && std::isfinite(m_s[s].x[d]) && std::isfinite(m_s[s].v[d]) &&
+                   m_cellOf[s][d] < m_cells[d];
+        if (!fine) throw std::runtime_error("checkpoint corrupt (particle state)");
+    }
+    if (!std::all_of(m_head.begin(), m_head.end(), [n](std::uint32_t h) { return h == kNone || h < n; }))
+        throw std::runtime_error("checkpoint corrupt (cell lists)");
+    const auto positiveFinite = [](Real v) { return std::isfinite(v) && v > 0; };
+    if (!std::all_of(m_radius.begin(), m_radius.end(), positiveFinite) ||
+        !std::all_of(m_mass.begin(), m_mass.end(), positiveFinite) ||
+        std::any_of(times.begin(), times.end(), [](Real t) { return std::isnan(t); }))
+        throw std::runtime_error("checkpoint corrupt (radii, masses or event times)");
     m_slot.assign(n, kNone);
     for (std::uint32_t s = 0; s < n; ++s) {
         if (id[s] >= n || m_slot[id[s]] != kNone)

@@ -65,7 +65,9 @@ public:
            std::vector<Real> mass);
 
     /// Executes events until the next one would be later than t_end [s]; afterwards time() is
-    /// t_end. Returns the events done. Stops early when stalled() (the clock stands still).
+    /// t_end. Returns the events done. Both run calls stop early, after a whole event, when
+    /// stalled() (the clock stands still) or when interruptRequested() (core/interrupt.hpp,
+    /// polled every 4096 events; then interrupted() is true and time() is that of the last event).
     std::uint64_t runUntil(Real tEnd);
     /// Executes events until `collisions` more collisions have happened or the next event would
     /// be later than t_end; time() is then the time of the last event. Stops early when
@@ -77,6 +79,8 @@ public:
     /// Events of one watchdog window: the clock must move within it (N-proportional, so that
     /// any legitimate burst of simultaneous events fits; bounded, so a stall ends in seconds).
     std::uint64_t watchdogWindow() const noexcept { return 16 * std::uint64_t{size()} + (1u << 17); }
+    /// The last run call stopped early on SIGINT/SIGTERM.
+    bool interrupted() const noexcept { return m_interrupted; }
     /// Elastic pre-run done (edmd spec 4.2 step 4): brings every particle to the current time,
     /// makes it time 0 and resets collision counters, TC clocks, statistics and accumulators.
     void restartClock();
@@ -257,6 +261,7 @@ private:
     std::uint64_t m_nextSort = 0;  ///< value of m_stats.events at which the next spatial sort happens
     EngineStats m_stats;
     Stall m_stall = Stall::None;
+    bool m_interrupted = false;  ///< the last run() stopped on an interrupt request
 };
 
 }  // namespace granulab::edmd

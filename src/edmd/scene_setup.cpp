@@ -34,7 +34,8 @@ struct Context {
 
 /// Box, count and volume fraction (two given, the third follows; edmd Eq. 4.2-4.4) and the
 /// initial-state spec.
-void resolveParticles(const Context& x, Setup& s, Diagnostics& d) {
+/// Returns false when the box or the count cannot be used for the further checks (reported).
+bool resolveParticles(const Context& x, Setup& s, Diagnostics& d) {
     const auto& [sc, e, loc, D] = x;
     const Real meanVolume = ballVolume(D, 1.0) * meanPower(D, e.radius, e.radiusMax);
     std::array<Real, 3> box{1, 1, 1};
@@ -59,17 +60,17 @@ void resolveParticles(const Context& x, Setup& s, Diagnostics& d) {
                             "{:.4g} m (volume {:.4g} m^{}): outside the range of double precision; choose "
                             "radius, count and volume fraction whose volumes are finite",
                             std::max(e.radius, e.radiusMax), meanVolume, D, box[0], volume, D));
-        return;
+        return false;
     }
     const Real resolvedCount =
         count > 0 ? static_cast<Real>(count) : std::round(e.volumeFraction * volume / meanVolume);
-    if (!(resolvedCount >= 1 && resolvedCount <= kMaxParticleCount)) {
+    if (!(resolvedCount >= 2 && resolvedCount <= kMaxParticleCount)) {
         d.error(loc, "edmd.count",
-                fmt::format("resolves to {:.6g} particles; allowed [1, {:.0f}] (ids are 32-bit)",
+                fmt::format("resolves to {:.6g} particles; allowed [2, {:.0f}] (a gas and its measurements "
+                            "need two particles; ids are 32-bit)",
                             resolvedCount, kMaxParticleCount));
-        return;
+        if (!(resolvedCount >= 1 && resolvedCount <= kMaxParticleCount)) return false;
     }
-
     count = static_cast<std::uint64_t>(resolvedCount);
     // Engine state, the initial-state arrays and the queue: about 160 (2D) / 220 (3D) bytes each.
     checkMemoryFits(d, loc, "edmd.count", resolvedCount * (D == 2 ? 160.0 : 220.0),
@@ -88,6 +89,7 @@ void resolveParticles(const Context& x, Setup& s, Diagnostics& d) {
     s.init.placement = e.placement == "random" ? Placement::Random : Placement::Lattice;
     s.init.temperature = e.temperature;
     s.init.seed = sc.run.seed;
+    return true;
 }
 
 /// The engine configuration and the kinetic-theory scales of the initial state (t_E, lambda,
@@ -158,9 +160,6 @@ void resolveRunLength(const Context& x, Setup& s, Diagnostics& d) {
         d.error(loc, "edmd.end_collisions",
                 fmt::format("{} per particle x {} particles / 2 = {:.3g} collisions; allowed at most 2^53",
                             e.endCollisions, count, endCollisions));
-    if (count < 2 && e.equilibrate > 0)
-        d.error(loc, "edmd.equilibrate",
-                "a single particle has no partner for the elastic pre-run; set edmd.equilibrate = 0");
     if (!(equilibration <= kExactIntegerLimit))
         d.error(loc, "edmd.equilibrate",
                 fmt::format("{} per particle x {} particles / 2 = {:.3g} collisions; allowed at most 2^53",
@@ -233,8 +232,7 @@ Setup resolveScene(const model::SceneDef& sc) {
     const Context x{sc, sc.edmd, loc, sc.run.dimension == 2 ? 2 : 3};
     Setup s;
     s.dim = sc.run.dimension;
-    resolveParticles(x, s, d);
-    d.throwIfAny();  // the rest needs a finite box and count
+    if (!resolveParticles(x, s, d)) d.throwIfAny();  // the rest needs a finite box and count
     configureEngine(x, s);
     resolveRunLength(x, s, d);
     d.throwIfAny();

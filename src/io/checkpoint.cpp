@@ -1,11 +1,17 @@
 // SPDX-License-Identifier: MIT
-// Checkpoint container (io/checkpoint.hpp): header, identity check, engine blob with its length.
+// Checkpoint container (io/checkpoint.hpp): header, identity check, engine blob with its length,
+// checksum. Writing streams every byte through a hashing buffer (no second copy of the state in
+// memory); reading checks the checksum in a first pass over the file, then parses it.
 #include "io/checkpoint.hpp"
 
 #include <fmt/format.h>
 
+#include <array>
+#include <filesystem>
 #include <fstream>
+#include <new>
 #include <stdexcept>
+#include <streambuf>
 
 #include "core/binary_io.hpp"
 #include "io/atomic_file.hpp"
@@ -15,6 +21,60 @@ namespace granulab::io {
 namespace {
 constexpr std::uint64_t kMagic = 0x544b434c42414e47ULL;         // "GNABLCKT"
 constexpr std::uint64_t kOldEdmdMagic = 0x31444d4445424c47ULL;  // "GLBEDMD1": edmd files before version 5
+constexpr std::uint64_t kFnvOffset = 0xcbf29ce484222325ULL;     // 64-bit FNV-1a (Fowler, Noll, Vo)
+constexpr std::uint64_t kFnvPrime = 0x100000001b3ULL;
+constexpr std::uint64_t kTrailerBytes = 16;  // blob length + checksum
+
+std::uint64_t fnv1a(std::uint64_t h, const char* bytes, std::size_t n) noexcept {
+    for (std::size_t k = 0; k < n; ++k) h = (h ^ static_cast<unsigned char>(bytes[k])) * kFnvPrime;
+    return h;
+}
+
+/// Passes every byte on to `target`, hashing and counting it.
+class HashingBuf final : public std::streambuf {
+public:
+    explicit HashingBuf(std::streambuf* target) : m_target(target) {}
+    std::uint64_t hash() const noexcept { return m_hash; }
+    std::uint64_t bytes() const noexcept { return m_bytes; }
+
+protected:
+    int_type overflow(int_type c) override {
+        if (traits_type::eq_int_type(c, traits_type::eof())) return traits_type::not_eof(c);
+        const char ch = traits_type::to_char_type(c);
+        return xsputn(&ch, 1) == 1 ? c : traits_type::eof();
+    }
+    std::streamsize xsputn(const char* s, std::streamsize n) override {
+        m_hash = fnv1a(m_hash, s, static_cast<std::size_t>(n));
+        m_bytes += static_cast<std::uint64_t>(n);
+        return m_target->sputn(s, n);
+    }
+
+private:
+    std::streambuf* m_target;
+    std::uint64_t m_hash = kFnvOffset;
+    std::uint64_t m_bytes = 0;
+};
+
+/// Checks the checksum of the `size`-byte file open in `in`: 64-bit FNV-1a over all bytes but
+/// the last 8, which hold it.
+void checkChecksum(std::istream& in, std::uint64_t size, const std::string& path) {
+    in.seekg(0);
+    std::uint64_t h = kFnvOffset;
+    std::array<char, 1 << 16> chunk{};
+    for (std::uint64_t left = size - 8; left > 0;) {
+        const auto n = static_cast<std::streamsize>(std::min<std::uint64_t>(left, chunk.size()));
+        in.read(chunk.data(), n);
+        if (!in) throw std::runtime_error(path + " cannot be read");
+        h = fnv1a(h, chunk.data(), static_cast<std::size_t>(n));
+        left -= static_cast<std::uint64_t>(n);
+    }
+    const auto stored = readPod<std::uint64_t>(in);
+    if (stored != h)
+        throw std::runtime_error(fmt::format(
+            "{} is damaged: checksum mismatch (stored {:016x}, computed {:016x}; the file was changed "
+            "or cut after it was written); rerun the scene without --resume, or resume from a good copy",
+            path, stored, h));
+}
 
 std::string describe(const SceneIdentity& id) {
     std::string s;
@@ -24,10 +84,10 @@ std::string describe(const SceneIdentity& id) {
 }  // namespace
 
 std::uint64_t fingerprint(const SceneIdentity& identity) {
-    std::uint64_t h = 0xcbf29ce484222325ULL;
+    std::uint64_t h = kFnvOffset;
     const auto mix = [&](const std::string& s) {
-        for (const unsigned char c : s) h = (h ^ c) * 0x100000001b3ULL;
-        h = (h ^ 0xffu) * 0x100000001b3ULL;  // separator
+        h = fnv1a(h, s.data(), s.size());
+        h = (h ^ 0xffu) * kFnvPrime;  // separator
     };
     for (const auto& e : identity) {
         mix(e.key);
@@ -39,7 +99,8 @@ std::uint64_t fingerprint(const SceneIdentity& identity) {
 void writeCheckpoint(const std::string& dir, const CheckpointHeader& header,
                      const std::function<void(std::ostream&)>& saveEngine) {
     AtomicFile file(dir + "/checkpoint.bin");
-    std::ostream& out = file.stream();
+    HashingBuf hashing(file.stream().rdbuf());
+    std::ostream out(&hashing);
     writePod(out, kMagic);
     writePod(out, kCheckpointVersion);
     writeString(out, header.engine);
@@ -50,14 +111,12 @@ void writeCheckpoint(const std::string& dir, const CheckpointHeader& header,
     }
     writePod(out, fingerprint(header.identity));
     writePod(out, header.bookkeeping.nextSnapshot);
-    const auto lengthAt = out.tellp();
-    writePod<std::uint64_t>(out, 0);  // blob length, patched below
-    const auto blobStart = out.tellp();
+    const std::uint64_t blobStart = hashing.bytes();
     saveEngine(out);
-    const auto blobEnd = out.tellp();
-    out.seekp(lengthAt);
-    writePod<std::uint64_t>(out, static_cast<std::uint64_t>(blobEnd - blobStart));
-    out.seekp(blobEnd);
+    writePod<std::uint64_t>(out, hashing.bytes() - blobStart);
+    out.flush();
+    if (!out) throw std::runtime_error("write failed: " + dir + "/checkpoint.bin");
+    writePod(file.stream(), hashing.hash());  // the checksum itself is not hashed
     file.commit();
 }
 
@@ -66,6 +125,10 @@ RunBookkeeping readCheckpoint(const std::string& dir, const CheckpointHeader& ex
     const std::string path = dir + "/checkpoint.bin";
     std::ifstream in(path, std::ios::binary);
     if (!in) throw std::runtime_error(fmt::format("no checkpoint at {} (run without --resume first)", path));
+    std::error_code ec;
+    const std::uint64_t size = std::filesystem::file_size(path, ec);
+    constexpr std::uint64_t kHeaderBytes = 12;  // magic + version
+    if (ec || size < 8) throw std::runtime_error(path + " is not a granulab checkpoint (too short)");
     const auto magic = readPod<std::uint64_t>(in);
     if (magic == kOldEdmdMagic)
         throw std::runtime_error(
@@ -73,12 +136,16 @@ RunBookkeeping readCheckpoint(const std::string& dir, const CheckpointHeader& ex
                         "checkpoints had one container); this build reads version {}: rerun the scene "
                         "without --resume",
                         path, kCheckpointVersion));
-    if (!in || magic != kMagic) throw std::runtime_error(path + " is not a granulab checkpoint");
+    if (magic != kMagic) throw std::runtime_error(path + " is not a granulab checkpoint");
+    if (size < kHeaderBytes + kTrailerBytes)
+        throw std::runtime_error(fmt::format("{} is damaged: truncated ({} bytes)", path, size));
     if (const auto v = readPod<std::uint32_t>(in); v != kCheckpointVersion)
         throw std::runtime_error(
             fmt::format("{} has format version {}, this build reads version {}: rerun the scene "
                         "without --resume (or with the granulab version that wrote it)",
                         path, v, kCheckpointVersion));
+    checkChecksum(in, size, path);
+    in.seekg(static_cast<std::streamoff>(kHeaderBytes));
     CheckpointHeader h;
     h.engine = readString(in);
     if (h.engine != expected.engine)
@@ -109,11 +176,21 @@ RunBookkeeping readCheckpoint(const std::string& dir, const CheckpointHeader& ex
     }
     RunBookkeeping book;
     book.nextSnapshot = readPod<std::int64_t>(in);
-    const auto length = readPod<std::uint64_t>(in);
-    if (!in) throw std::runtime_error(path + " is truncated");
-    const auto blobStart = in.tellg();
-    loadEngine(in);
-    if (!in || static_cast<std::uint64_t>(in.tellg() - blobStart) != length)
+    const auto blobStart = static_cast<std::uint64_t>(in.tellg());
+    if (!in || blobStart + kTrailerBytes > size) throw std::runtime_error(path + " is truncated");
+    const std::uint64_t length = size - kTrailerBytes - blobStart;
+    in.seekg(static_cast<std::streamoff>(size - kTrailerBytes));
+    if (readPod<std::uint64_t>(in) != length)
+        throw std::runtime_error(fmt::format("{} is corrupt (blob length)", path));
+    in.seekg(static_cast<std::streamoff>(blobStart));
+    try {
+        loadEngine(in);
+    } catch (const std::bad_alloc&) {
+        throw std::runtime_error(path + " is corrupt (the engine state does not fit in memory)");
+    } catch (const std::exception& e) {
+        throw std::runtime_error(fmt::format("{} cannot be resumed: {}", path, e.what()));
+    }
+    if (!in || static_cast<std::uint64_t>(in.tellg()) - blobStart != length)
         throw std::runtime_error(
             fmt::format("{} is corrupt or truncated (the engine state is not {} bytes)", path, length));
     return book;

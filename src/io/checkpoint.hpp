@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: MIT
 // The one checkpoint container of every engine (DESIGN.md "Contract": `granulab run --resume`
-// continues bit for bit). Layout, little-endian as the machine writes it:
+// continues bit for bit). Layout (format version 6), little-endian as the machine writes it:
 //   magic "GNABLCKT" (u64) | format version (u32) | engine name | scene identity (key, value
-//   pairs and their 64-bit fingerprint) | run bookkeeping | engine blob length (u64) | blob
+//   pairs and their 64-bit fingerprint) | run bookkeeping | blob | blob length (u64) |
+//   checksum (u64: 64-bit FNV-1a over every byte before it)
 // The blob is the engine's own state (dem::World::saveState, edmd::Engine::saveState, ...).
-// Files of an older format version, and the unversioned edmd files of version 1, are refused
-// with a message naming their version.
+// A file whose checksum does not match (a flipped bit, a block overwritten, a cut file) is
+// refused naming the file, before the engine reads anything. Files of an older format version,
+// and the unversioned edmd files of version 1, are refused with a message naming their version.
 #pragma once
 #include <cstdint>
 #include <functional>
@@ -39,15 +41,17 @@ struct CheckpointHeader {
 };
 
 /// The format version this build writes and reads.
-inline constexpr std::uint32_t kCheckpointVersion = 5;
+inline constexpr std::uint32_t kCheckpointVersion = 6;
 
 /// Writes `dir`/checkpoint.bin atomically; `saveEngine` writes the blob.
 void writeCheckpoint(const std::string& dir, const CheckpointHeader& header,
                      const std::function<void(std::ostream&)>& saveEngine);
 
-/// Reads `dir`/checkpoint.bin: checks magic, version, engine and identity against `expected`
-/// (throws std::runtime_error with a message naming what differs and how to resume), then calls
-/// `loadEngine` on the blob and checks that it consumed exactly the blob. Returns the bookkeeping.
+/// Reads `dir`/checkpoint.bin: checks magic, version, checksum, engine and identity against
+/// `expected` (throws std::runtime_error with a message naming the file, what differs and how to
+/// resume), then calls `loadEngine` on the blob and checks that it consumed exactly the blob (an
+/// exception of `loadEngine`, std::bad_alloc included, becomes a std::runtime_error naming the
+/// file). Returns the bookkeeping.
 RunBookkeeping readCheckpoint(const std::string& dir, const CheckpointHeader& expected,
                               const std::function<void(std::istream&)>& loadEngine);
 

@@ -9,8 +9,10 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <system_error>
 
 #include "core/suggest.hpp"
 #include "io/toml_table_reader.hpp"
@@ -129,6 +131,8 @@ SceneDef readSceneText(const std::string& text, const std::string& path,
 
 SceneDef readScene(const std::string& path, const std::vector<Override>& overrides,
                    const std::vector<SceneSections>& engines) {
+    if (std::error_code ec; std::filesystem::is_directory(path, ec))
+        throw SceneError(makeDiagnostic(path, 0, "", "is a directory, expected a scene file (.toml)"));
     std::ifstream in(path, std::ios::binary);
     if (!in) throw SceneError(makeDiagnostic(path, 0, "", "cannot open scene file (missing or unreadable)"));
     std::ostringstream ss;

@@ -15,8 +15,11 @@ void writeSummary(const std::string& path, const SummaryCommon& c, const nlohman
     js["engine"] = c.engine;
     js["version"] = kVersion;
     js["scene"] = c.scene;
-    js["status"] = c.completed ? "completed" : "unstable";
-    if (!c.completed) js["diagnosis"] = c.diagnosis;
+    js["status"] = c.status == RunStatus::Completed     ? "completed"
+                   : c.status == RunStatus::Interrupted ? "interrupted"
+                                                        : "unstable";
+    if (c.status == RunStatus::Unstable) js["diagnosis"] = c.diagnosis;
+    if (c.status == RunStatus::Interrupted && !c.resumeCommand.empty()) js["resume"] = c.resumeCommand;
     js["particles"] = c.particles;
     js["sim_time"] = c.simTime;
     js["wall_time_s"] = c.wallTime;

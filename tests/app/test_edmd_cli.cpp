@@ -121,7 +121,7 @@ TEST(EdmdCli, BadInputNamesTheKeyAndExitsWithTwo) {
         {"small_box",
          replaceOnce(replaceOnce(kGas, "count = 400", "box = [5.0, 5.0]"), "volume_fraction = 0.3",
                      "volume_fraction = 0.1"),
-         {"edmd.box", "must hold 3 diameters"}},
+         {"edmd.box", "must hold 3 diameters", "edmd.count", "allowed [2,"}},
         {"dimension",
          replaceOnce(kGas, "dimension = 2", "dimension = 4"),
          {"run.dimension", "disks (2) or spheres (3)"}},

@@ -98,3 +98,21 @@ TEST(BroadPhase, SortAndSweepHandlesExactlyTouchingBoxes) {
         }
     }
 }
+
+// Issue 11, case 1: a particle far out, where its box is narrower than the coordinate step of
+// double precision (begin == end), sorts its end before its begin; the first sweep ended it
+// without having begun it and crashed. It overlaps nothing; the others are still found.
+TEST(BroadPhase, SortAndSweepToleratesBoxesBelowTheCoordinateResolution) {
+    model::ParticleStore s;
+    s.add(0, {1e14, 0.05}, {}, 0, 0, 0.002, 1, 1, 0);
+    s.add(1, {0.0, 0.0}, {}, 0, 0, 0.01, 1, 1, 0);
+    s.add(2, {0.015, 0.0}, {}, 0, 0, 0.01, 1, 1, 0);
+    dem::SortAndSweep sweep;
+    std::vector<std::uint64_t> pairs;
+    sweep.findPairs(s, 0.0, pairs);
+    ASSERT_EQ(pairs.size(), 1u);
+    EXPECT_EQ(pairs[0], dem::pairKey(1, 2));
+    s.x[0] += 1e-3;  // the incremental update too
+    sweep.findPairs(s, 0.0, pairs);
+    EXPECT_EQ(pairs.size(), 1u);
+}

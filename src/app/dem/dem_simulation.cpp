@@ -10,6 +10,7 @@
 
 #include "app/dem/dem_engine.hpp"
 #include "app/simulation_options.hpp"
+#include "core/interrupt.hpp"
 #include "core/version.hpp"
 #include "dem/setup.hpp"
 #include "dem/step_clock.hpp"
@@ -76,6 +77,7 @@ public:
 
     std::uint32_t advance(const Stop& stop) override {
         while (static_cast<std::uint64_t>(m_world.stepIndex()) < stop.count) {
+            if (interruptRequested()) return kSimInterrupted;  // between whole steps
             const std::uint32_t status = m_world.step();
             if (status != dem::kStepOk)
                 return (status & dem::kStepNonFinite ? kSimNonFinite : 0u) |

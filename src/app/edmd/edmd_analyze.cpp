@@ -104,7 +104,9 @@ int edmdAnalyze(const AnalyzeOptions& opt, const nlohmann::json& summary) {
     }
     const std::size_t n = points.size();
     if (n == 0) badInput(finalPath, "no particles");
-    const double a = summary.value("radius", points.radius[0]);
+    // The radius of g(2a) is the current one, from final.csv (grown spheres are larger than the
+    // scene's edmd.radius; polydisperse gases: the smallest, as edmd.radius is).
+    const double a = *std::min_element(points.radius.begin(), points.radius.end());
     fs::create_directories(opt.dir + "/analysis");
     const auto vel = analysis::velocityStats(points);
     analysis::DensityParams dp;
