@@ -49,7 +49,7 @@ echo "  bad input   ${total[bad_input]}       (exit status 2)"
 echo "  unstable    ${total[unstable]}       (exit status 3)"
 echo "  exceptions  ${total[exceptions]}       (exit status 1: an exception other than bad input)"
 echo "  crashes     ${total[crashes]}       (signal or sanitizer error)"
-echo "  hangs       ${total[hangs]}       (an input over $hang s)"
+echo "  hangs       ${total[hangs]}       (an input over $hang s of CPU)"
 echo -n "  harness exit statuses:"
 for rc in "${!rcs[@]}"; do echo -n " $rc x${rcs[$rc]}"; done
 echo "   (0 clean, 1 findings, 124 hang, >128 signal)"

@@ -51,6 +51,7 @@ RunResult runChecked(const std::string& text, const std::string& path, const Run
     const std::unique_ptr<app::Simulation> sim = engine.build(scene, {path, true});
     sim->warnings();
     const app::RunPlan plan = sim->plan();
+    if (sim->particles() > limits.maxParticles) return {Outcome::Ok, "built, not started (large)"};
     setStage("start");
     sim->start();
     app::Trigger end(plan.end), series(plan.series), snapshots(plan.snapshots), checkpoints(plan.checkpoints),

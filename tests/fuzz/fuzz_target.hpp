@@ -4,6 +4,7 @@
 // advance over the run loop's own stops (app/run_loop.cpp). Bad input (SceneError, exit 2) and
 // a failed advance (SimStatus, exit 3) are accepted outcomes; any other exception is a finding.
 #pragma once
+#include <cstddef>
 #include <string>
 
 namespace granulab::fuzz {
@@ -19,6 +20,9 @@ struct RunLimits {
     int slices = 200;             ///< advance in at most this many slices ...
     double runSeconds = 1.0;      ///< ... and stop slicing after this CPU time [s]
     double sliceFraction = 1e-3;  ///< a slice: this fraction of the run (time or count)
+    /// Larger scenes are read, described and built but not started: a valid scene of millions
+    /// of particles is slow, not stuck, and would be reported as a hang.
+    std::size_t maxParticles = 20000;
 };
 
 /// Runs `text` (named `path` in messages). Never throws; crashes and hangs end the process

@@ -181,6 +181,39 @@ void replaceSpan(std::string& t, const Span& s, const std::string& with) {
     t.replace(s.pos, s.len, with);
 }
 
+/// Drops or duplicates one section (a header line and the lines up to the next header).
+void mutateSection(std::vector<std::string>& lines, bool drop, CounterRng& rng) {
+    std::vector<std::size_t> headers;
+    for (std::size_t i = 0; i < lines.size(); ++i)
+        if (isHeader(lines[i])) headers.push_back(i);
+    if (headers.empty()) return;
+    const std::size_t h = below(rng, headers.size());
+    const auto from = static_cast<std::ptrdiff_t>(headers[h]);
+    const auto to = static_cast<std::ptrdiff_t>(h + 1 < headers.size() ? headers[h + 1] : lines.size());
+    const std::vector<std::string> section(lines.begin() + from, lines.begin() + to);
+    if (drop)
+        lines.erase(lines.begin() + from, lines.begin() + to);
+    else
+        lines.insert(lines.begin() + to, section.begin(), section.end());
+}
+
+/// Appends an interesting value to, or drops the last element of, an array on a value line.
+void mutateArray(std::vector<std::string>& lines, bool grow, CounterRng& rng) {
+    std::vector<std::size_t> arrays;
+    for (std::size_t i = 0; i < lines.size(); ++i)
+        if (lines[i].find("= [") != std::string::npos && lines[i].rfind(']') != std::string::npos)
+            arrays.push_back(i);
+    if (arrays.empty()) return;
+    std::string& line = lines[pick(arrays, rng)];
+    const std::size_t close = line.rfind(']');
+    if (grow) {
+        line.insert(close, ", " + pick(interestingValues(), rng));
+    } else {
+        const std::size_t comma = line.rfind(',', close);
+        if (comma != std::string::npos && comma > line.find("= [")) line.erase(comma, close - comma);
+    }
+}
+
 }  // namespace
 
 const std::vector<std::string>& Mutator::kinds() {
@@ -218,90 +251,73 @@ std::string Mutator::mutate(const std::string& text, CounterRng& rng) const {
 }
 
 void Mutator::mutateOnce(std::string& t, CounterRng& rng) const {
-    const Tokens tok = scan(t);
     const std::size_t kind = below(rng, kinds().size());
+    if (kind <= 4 || kind == 16)
+        mutateToken(t, kind, rng);
+    else if (kind <= 12)
+        mutateLines(t, kind, rng);
+    else
+        mutateBytes(t, kind, rng);
+}
+
+void Mutator::mutateToken(std::string& t, std::size_t kind, CounterRng& rng) const {
+    const Tokens tok = scan(t);
+    const bool value = kind <= 2 || kind == 16;
+    const std::vector<Span>& spans = value ? tok.values : kind == 3 ? tok.strings : tok.keys;
+    if (spans.empty()) return;
+    const Span s = pick(spans, rng);
     switch (kind) {
-        case 0:
-        case 16:  // interesting values are drawn twice as often as the other kinds
-            if (!tok.values.empty()) replaceSpan(t, pick(tok.values, rng), pick(interestingValues(), rng));
-            return;
         case 1:
-            if (!tok.values.empty()) {
-                const Span s = pick(tok.values, rng);
-                replaceSpan(t, s, arithmetic(t.substr(s.pos, s.len), rng));
-            }
+            replaceSpan(t, s, arithmetic(t.substr(s.pos, s.len), rng));
             return;
         case 2:
-            if (!tok.values.empty()) replaceSpan(t, pick(tok.values, rng), pick(otherTypes(), rng));
+            replaceSpan(t, s, pick(otherTypes(), rng));
             return;
         case 3:
-            if (!tok.strings.empty()) replaceSpan(t, pick(tok.strings, rng), pick(m_strings, rng));
+            replaceSpan(t, s, pick(m_strings, rng));
             return;
         case 4:
-            if (!tok.keys.empty()) replaceSpan(t, pick(tok.keys, rng), pick(m_keys, rng));
+            replaceSpan(t, s, pick(m_keys, rng));
             return;
         default:
+            replaceSpan(t, s, pick(interestingValues(), rng));
+            return;  // drawn twice as often
+    }
+}
+
+void Mutator::mutateLines(std::string& t, std::size_t kind, CounterRng& rng) const {
+    std::vector<std::string> lines = splitLines(t);
+    if (lines.empty()) lines.push_back("");
+    const auto at = [&](std::size_t i) { return lines.begin() + static_cast<std::ptrdiff_t>(i); };
+    const std::size_t a = below(rng, lines.size()), b = below(rng, lines.size());
+    switch (kind) {
+        case 5:
+            lines.erase(at(a));
+            break;
+        case 6: {
+            const std::string copy = lines[a];
+            lines.insert(at(b), copy);
+            break;
+        }
+        case 7:
+            std::swap(lines[a], lines[b]);
+            break;
+        case 8:
+            lines.insert(at(a), pick(m_lines, rng));
+            break;
+        case 9:
+        case 10:
+            mutateSection(lines, kind == 9, rng);
+            break;
+        default:
+            mutateArray(lines, kind == 11, rng);
             break;
     }
-    if (kind <= 12) {  // line and section mutations
-        std::vector<std::string> lines = splitLines(t);
-        if (lines.empty()) lines.push_back("");
-        const std::size_t a = below(rng, lines.size()), b = below(rng, lines.size());
-        switch (kind) {
-            case 5:
-                lines.erase(lines.begin() + static_cast<std::ptrdiff_t>(a));
-                break;
-            case 6:
-                lines.insert(lines.begin() + static_cast<std::ptrdiff_t>(b), lines[a]);
-                break;
-            case 7:
-                std::swap(lines[a], lines[b]);
-                break;
-            case 8:
-                lines.insert(lines.begin() + static_cast<std::ptrdiff_t>(a), pick(m_lines, rng));
-                break;
-            case 9:
-            case 10: {
-                std::vector<std::size_t> headers;
-                for (std::size_t i = 0; i < lines.size(); ++i)
-                    if (isHeader(lines[i])) headers.push_back(i);
-                if (headers.empty()) break;
-                const std::size_t h = below(rng, headers.size());
-                const std::size_t from = headers[h];
-                const std::size_t to = h + 1 < headers.size() ? headers[h + 1] : lines.size();
-                const std::vector<std::string> section(lines.begin() + static_cast<std::ptrdiff_t>(from),
-                                                       lines.begin() + static_cast<std::ptrdiff_t>(to));
-                if (kind == 9)
-                    lines.erase(lines.begin() + static_cast<std::ptrdiff_t>(from),
-                                lines.begin() + static_cast<std::ptrdiff_t>(to));
-                else
-                    lines.insert(lines.begin() + static_cast<std::ptrdiff_t>(to), section.begin(),
-                                 section.end());
-                break;
-            }
-            default: {  // 11, 12: arrays on value lines
-                std::vector<std::size_t> arrays;
-                for (std::size_t i = 0; i < lines.size(); ++i)
-                    if (lines[i].find("= [") != std::string::npos && lines[i].rfind(']') != std::string::npos)
-                        arrays.push_back(i);
-                if (arrays.empty()) break;
-                std::string& line = lines[pick(arrays, rng)];
-                const std::size_t close = line.rfind(']');
-                if (kind == 11) {
-                    line.insert(close, ", " + pick(interestingValues(), rng));
-                } else {
-                    const std::size_t comma = line.rfind(',', close);
-                    if (comma != std::string::npos && comma > line.find("= ["))
-                        line.erase(comma, close - comma);
-                }
-                break;
-            }
-        }
-        t = joinLines(lines);
-        if (t.size() > kMaxLength) t.resize(kMaxLength);
-        return;
-    }
-    // Raw bytes (13-15).
+    t = joinLines(lines);
+    if (t.size() > kMaxLength) t.resize(kMaxLength);
+}
+
+void Mutator::mutateBytes(std::string& t, std::size_t kind, CounterRng& rng) const {
     const std::size_t pos = below(rng, t.size() + 1);
     if (kind == 13 && !t.empty()) {
         t[std::min(pos, t.size() - 1)] ^= static_cast<char>(1u << below(rng, 8));

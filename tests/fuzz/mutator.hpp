@@ -24,6 +24,10 @@ public:
 
 private:
     void mutateOnce(std::string& text, CounterRng& rng) const;
+    void mutateToken(std::string& text, std::size_t kind, CounterRng& rng) const;  ///< values, strings, keys
+    void mutateLines(std::string& text, std::size_t kind,
+                     CounterRng& rng) const;  ///< lines, sections, arrays
+    void mutateBytes(std::string& text, std::size_t kind, CounterRng& rng) const;  ///< raw bytes
 
     std::vector<std::string> m_strings;  ///< quoted strings of the corpus, with their quotes
     std::vector<std::string> m_keys;     ///< keys (left of '=') of the corpus
