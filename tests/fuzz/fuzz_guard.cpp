@@ -189,11 +189,14 @@ void silenceEngines() {
         return;
     }
     dup2(null, STDOUT_FILENO);
-    dup2(null, STDERR_FILENO);
-    close(null);
 #if defined(__SANITIZE_ADDRESS__)
+    // Sanitized builds keep stderr: UBSan reports there whatever the report fd (the engines print
+    // little on stderr with quiet options).
     __sanitizer_set_report_fd(reinterpret_cast<void*>(static_cast<std::intptr_t>(g_err)));
+#else
+    dup2(null, STDERR_FILENO);
 #endif
+    close(null);
 }
 
 void say(const std::string& text) {
