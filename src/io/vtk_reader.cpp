@@ -123,7 +123,7 @@ public:
         if (bytes > m_text.size() - at - sizeof bytes) fail("array " + name + " is truncated");
         if (bytes % (sizeof(T) * components) != 0) fail("array " + name + " has a partial tuple");
         std::vector<T> v(bytes / sizeof(T));
-        std::memcpy(v.data(), m_text.data() + at + sizeof bytes, bytes);
+        if (bytes > 0) std::memcpy(v.data(), m_text.data() + at + sizeof bytes, bytes);  // data() may be null
         return v;
     }
 

@@ -82,6 +82,9 @@ RunResult runChecked(const std::string& text, const std::string& path, const Run
             stop.count = std::min(stop.count, sim->count() + std::min(sliceCount, ~sim->count()));
         else
             stop.time = std::min(stop.time, sim->time() + sliceTime);
+        // Every slice is bounded in work too: a valid run of 4e9 s is long, not stuck (a stuck
+        // one is the engine watchdog's, which ends a slice with kSimStalled).
+        stop.count = std::min(stop.count, sim->count() + std::min(limits.sliceCount, ~sim->count()));
         if (const std::uint32_t s = sim->advance(stop); s != app::kSimOk) return unstable(*sim, s);
         const double t = sim->time();
         const std::uint64_t c = sim->count();

@@ -17,9 +17,10 @@ struct RunResult {
 };
 
 struct RunLimits {
-    int slices = 200;             ///< advance in at most this many slices ...
-    double runSeconds = 1.0;      ///< ... and stop slicing after this CPU time [s]
-    double sliceFraction = 1e-3;  ///< a slice: this fraction of the run (time or count)
+    int slices = 200;                   ///< advance in at most this many slices ...
+    double runSeconds = 1.0;            ///< ... and stop slicing after this CPU time [s]
+    double sliceFraction = 1e-3;        ///< a slice: this fraction of the run (time or count) ...
+    std::uint64_t sliceCount = 100000;  ///< ... and at most this many steps or collisions
     /// Larger scenes are read, described and built but not started: a valid scene of millions
     /// of particles is slow, not stuck, and would be reported as a hang.
     std::size_t maxParticles = 20000;

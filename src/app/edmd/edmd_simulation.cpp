@@ -155,8 +155,12 @@ public:
 
     std::uint32_t advance(const Stop& stop) override {
         if (stop.count != std::numeric_limits<std::uint64_t>::max()) {
+            // Whichever comes first: the collision count, or the time (then the clock is at it).
             const std::uint64_t now = m_engine.stats().collisions;
-            m_engine.runCollisions(stop.count > now ? stop.count - now : 0);
+            m_engine.runCollisions(stop.count > now ? stop.count - now : 0, stop.time);
+            if (m_engine.stats().collisions < stop.count && m_engine.stalled() == edmd::Stall::None &&
+                !m_engine.interrupted())
+                m_engine.runUntil(stop.time);
         } else {
             m_engine.runUntil(stop.time);
         }
