@@ -95,6 +95,7 @@ Engine<D, Queue>::Engine(EngineConfig config, std::vector<V> x, std::vector<V> v
     buildCells();
     sortParticles(false);
     rescheduleAll();
+    resetWatchdog();
 }
 
 template <int D, class Queue>
@@ -612,11 +613,10 @@ std::uint64_t Engine<D, Queue>::run(Real tEnd, std::uint64_t collisionLimit) {
     // than round-off (an inelastic collapse or jammed growing spheres collide forever at one
     // instant); a collision-count run must also collide within 64 windows (a pre-run of
     // particles that never meet). Cost: one comparison per event.
+    // The window state lives in the engine, so a stall spread over many short calls (frequent
+    // output stops) is seen as well.
     const bool byCollisions = collisionLimit != ~std::uint64_t{0};
-    const std::uint64_t window = watchdogWindow();
-    std::uint64_t watchEvents = m_stats.events + window, quietWindows = 0;
-    Real watchTime = m_now;
-    std::uint64_t watchCollisions = m_stats.collisions;
+    auto& w = m_watch;
     while (size() > 0 && m_stats.collisions < collisionLimit) {
         if ((done % kInterruptPoll) == 0 && interruptRequested()) {  // between whole events
             m_interrupted = true;
@@ -624,19 +624,17 @@ std::uint64_t Engine<D, Queue>::run(Real tEnd, std::uint64_t collisionLimit) {
         }
         const Real t = m_queue.topTime();
         if (!(t <= tEnd)) break;
-        if (m_stats.events >= watchEvents) {
-            if (!(m_now - watchTime > 1e-12 * std::abs(m_now))) {
+        if (m_stats.events >= w.events) {
+            if (!(m_now - w.time > 1e-12 * std::abs(m_now))) {
                 m_stall = Stall::Clock;
                 break;
             }
-            quietWindows = m_stats.collisions == watchCollisions ? quietWindows + 1 : 0;
-            if (byCollisions && quietWindows >= 64) {
+            w.quietWindows = m_stats.collisions == w.collisions ? w.quietWindows + 1 : 0;
+            if (byCollisions && w.quietWindows >= 64) {
                 m_stall = Stall::NoCollision;
                 break;
             }
-            watchEvents = m_stats.events + window;
-            watchTime = m_now;
-            watchCollisions = m_stats.collisions;
+            w = {m_stats.events + watchdogWindow(), m_now, m_stats.collisions, w.quietWindows};
         }
         if (t > m_regridTime) {  // growing spheres reached the cell edge: rebuild, then go on
             m_now = m_regridTime;
@@ -697,6 +695,7 @@ void Engine<D, Queue>::restartClock() {
     buildCells();
     sortParticles(false);
     rescheduleAll();
+    resetWatchdog();
 }
 
 template <int D, class Queue>
@@ -715,6 +714,12 @@ void Engine<D, Queue>::setGrowthRate(Real u) {
     buildCells();
     sortParticles(false);
     rescheduleAll();
+    resetWatchdog();
+}
+
+template <int D, class Queue>
+void Engine<D, Queue>::resetWatchdog() noexcept {
+    m_watch = {m_stats.events + watchdogWindow(), m_now, m_stats.collisions, 0};
 }
 
 template <int D, class Queue>
@@ -878,6 +883,7 @@ void Engine<D, Queue>::loadState(std::istream& is) {
     }
     m_queue.reset(n);
     for (std::uint32_t s = 0; s < n; ++s) m_queue.set(s, times[s]);
+    resetWatchdog();
 }
 
 template class Engine<2, AddressableHeap>;

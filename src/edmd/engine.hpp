@@ -261,6 +261,15 @@ private:
     std::uint64_t m_nextSort = 0;  ///< value of m_stats.events at which the next spatial sort happens
     EngineStats m_stats;
     Stall m_stall = Stall::None;
+    /// The watchdog's current window: it ends at `events`; the clock and the collision count
+    /// at its start; windows in a row without a collision.
+    struct Watch {
+        std::uint64_t events = 0;
+        Real time = 0;
+        std::uint64_t collisions = 0, quietWindows = 0;
+    } m_watch;
+    /// Starts a fresh watchdog window at the current state (construction, restart, load).
+    void resetWatchdog() noexcept;
     bool m_interrupted = false;  ///< the last run() stopped on an interrupt request
 };
 

@@ -262,14 +262,16 @@ TEST(Cli, AnalyzeUsesTheGrownRadius) {
 }
 
 // Case 16: the mean free path of a homogeneously cooling gas depends on the density only; it read
-// 12 % low at tau = 5 (row-end speed over the row's mean collision frequency). Now it stays at the
-// Enskog value l_E = a/(2^((D-2)/2) D nu g_2a) (thesis mean-speed convention) as the gas cools.
+// low (the row-end speed over the row's mean collision frequency: 12 % at tau = 5 with the bundled
+// series, 24 % with the long rows here). Now it stays at the Enskog value
+// l_E = a/(2^((D-2)/2) D nu g_2a) (thesis mean-speed convention) while the gas cools 36-fold.
 TEST(Cli, MeanFreePathOfACoolingGasStaysAtTheEnskogValue) {
     const test::ScratchDir scratch;
     const auto r = test::runGranulab(
         "run '" + kExamples +
-            "edmd/cooling_gas_2d.toml' --set edmd.count=4000 --set edmd.restitution=0.9 --set edmd.end_tau=5 "
-            "--set edmd.volume_fraction=0.1 --set edmd.clusters=false -q --out out",
+            "edmd/cooling_gas_2d.toml' --set edmd.count=4000 --set edmd.restitution=0.5 --set edmd.end_tau=5 "
+            "--set edmd.volume_fraction=0.1 --set edmd.clusters=false --set edmd.series_points=10 -q --out "
+            "out",
         scratch.path, 120);
     ASSERT_EQ(r.status, 0) << r.output;
     std::string header;
@@ -279,10 +281,10 @@ TEST(Cli, MeanFreePathOfACoolingGasStaysAtTheEnskogValue) {
     int checked = 0;
     for (const auto& row : rows) {
         const double t = row[static_cast<std::size_t>(tau)];
-        if (t < 0.5) continue;  // a few collisions per particle: noisy rows
+        if (t < 0.3) continue;  // rows of less than one collision per particle: noisy
         ++checked;
-        // Statistical scatter of f_E over a row of >= 4000 collisions: ~2 %; Enskog at nu = 0.1: ~2 %.
-        EXPECT_NEAR(row[static_cast<std::size_t>(path)] / enskog, 1.0, 0.06) << "tau = " << t;
+        // Rows of >= 3000 collisions: ~2 % scatter; Enskog's g_2a at nu = 0.1: ~1 %.
+        EXPECT_NEAR(row[static_cast<std::size_t>(path)] / enskog, 1.0, 0.05) << "tau = " << t;
     }
-    EXPECT_GE(checked, 10);
+    EXPECT_GE(checked, 3);
 }
