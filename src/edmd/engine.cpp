@@ -152,6 +152,7 @@ template <int D, class Queue>
 void Engine<D, Queue>::sortParticles(bool requeue) {
     const auto n = size();
     m_nextSort = m_stats.events + kSortEvery * std::max<std::uint64_t>(n, 1);
+    m_checkAt = 0;  // housekeeping recomputes its next event
     if (n == 0) return;
     // Counting sort by cell index (stable): newSlot[s] is the slot s moves to. m_head serves as
     // the bucket counter; the lists are rebuilt below.
@@ -483,14 +484,17 @@ template <bool Growing, bool Uniform>
         const Real cc = dot(r, r) - sum * sum;
         if (!((b < 0) & (cc <= -b * bound))) return false;
         const Real ww = dot(w, w);
+        const Real disc = b * b - ww * cc;
+        if (!(disc >= 0)) return false;  // misses
+        if (cc > 0) {
+            dt = cc / (-b + std::sqrt(disc));  // as pairCollisionTime
+            return true;
+        }
         // In contact, an approach below round-off of |r||w| is a grazing touch, not a collision:
         // a collision that leaves the normal speed at zero (eps = 0) would else be found again
-        // at the same instant, forever (issue 11, case 2).
-        if (cc <= 0 && b * b <= kGrazing * kGrazing * dot(r, r) * ww) return false;
-        const Real disc = b * b - ww * cc;
-        if (!(disc >= 0)) return false;                  // misses
-        dt = cc <= 0 ? 0 : cc / (-b + std::sqrt(disc));  // as pairCollisionTime
-        return true;
+        // at the same instant, forever (issue 11, case 2). Only this rare branch pays for it.
+        dt = 0;
+        return b * b > kGrazing * kGrazing * dot(r, r) * ww;
     }
 }
 
@@ -612,38 +616,40 @@ std::uint64_t Engine<D, Queue>::run(Real tEnd, std::uint64_t collisionLimit) {
     // Progress watchdog (issue 11): within every window of events the clock must move by more
     // than round-off (an inelastic collapse or jammed growing spheres collide forever at one
     // instant); a collision-count run must also collide within 64 windows (a pre-run of
-    // particles that never meet). Cost: one comparison per event.
-    // The window state lives in the engine, so a stall spread over many short calls (frequent
-    // output stops) is seen as well.
+    // particles that never meet). The window state lives in the engine, so a stall spread over
+    // many short calls (frequent output stops) is seen as well.
     const bool byCollisions = collisionLimit != ~std::uint64_t{0};
     auto& w = m_watch;
     while (size() > 0 && m_stats.collisions < collisionLimit) {
-        if ((done % kInterruptPoll) == 0 && interruptRequested()) {  // between whole events
-            m_interrupted = true;
-            break;
-        }
         const Real t = m_queue.topTime();
         if (!(t <= tEnd)) break;
-        if (m_stats.events >= w.events) {
-            if (!(m_now - w.time > 1e-12 * std::abs(m_now))) {
-                m_stall = Stall::Clock;
-                break;
-            }
-            w.quietWindows = m_stats.collisions == w.collisions ? w.quietWindows + 1 : 0;
-            if (byCollisions && w.quietWindows >= 64) {
-                m_stall = Stall::NoCollision;
-                break;
-            }
-            w = {m_stats.events + watchdogWindow(), m_now, m_stats.collisions, w.quietWindows};
-        }
         if (t > m_regridTime) {  // growing spheres reached the cell edge: rebuild, then go on
             m_now = m_regridTime;
             regrid();
             continue;
         }
-        if (m_stats.events >= m_nextSort) {  // keyed on the event count: deterministic
-            sortParticles(true);
-            continue;
+        // Housekeeping behind one comparison per event (the hot loop pays nothing more): the
+        // interrupt poll every kInterruptPoll events, the watchdog window, the spatial sort.
+        if (m_stats.events >= m_checkAt) {
+            if (interruptRequested()) {  // between whole events
+                m_interrupted = true;
+                break;
+            }
+            if (m_stats.events >= w.events) {
+                if (!(m_now - w.time > 1e-12 * std::abs(m_now))) {
+                    m_stall = Stall::Clock;
+                    break;
+                }
+                w.quietWindows = m_stats.collisions == w.collisions ? w.quietWindows + 1 : 0;
+                if (byCollisions && w.quietWindows >= 64) {
+                    m_stall = Stall::NoCollision;
+                    break;
+                }
+                w = {m_stats.events + watchdogWindow(), m_now, m_stats.collisions, w.quietWindows};
+            }
+            if (m_stats.events >= m_nextSort) sortParticles(true);  // keyed on the event count: deterministic
+            m_checkAt = std::min({m_nextSort, w.events, m_stats.events + kInterruptPoll});
+            continue;  // a sort re-keys the queue
         }
         const std::uint32_t i = m_queue.top();
         GL_ASSERT(i < size() && t >= m_now, "edmd::Engine: event slot out of range or event in the past");
@@ -700,6 +706,7 @@ void Engine<D, Queue>::restartClock() {
 
 template <int D, class Queue>
 void Engine<D, Queue>::setGrowthRate(Real u) {
+    if (u == m_config.growthRate) return;  // nothing to rebuild
     if (u != 0)
         for (int d = 0; d < D; ++d)
             if (!m_config.periodic[d])
@@ -720,6 +727,7 @@ void Engine<D, Queue>::setGrowthRate(Real u) {
 template <int D, class Queue>
 void Engine<D, Queue>::resetWatchdog() noexcept {
     m_watch = {m_stats.events + watchdogWindow(), m_now, m_stats.collisions, 0};
+    m_checkAt = 0;
 }
 
 template <int D, class Queue>

@@ -268,6 +268,9 @@ private:
         Real time = 0;
         std::uint64_t collisions = 0, quietWindows = 0;
     } m_watch;
+    /// Event count of the next housekeeping (interrupt poll, watchdog, sort): the minimum of
+    /// their due counts; 0 after anything that changes one of them.
+    std::uint64_t m_checkAt = 0;
     /// Starts a fresh watchdog window at the current state (construction, restart, load).
     void resetWatchdog() noexcept;
     bool m_interrupted = false;  ///< the last run() stopped on an interrupt request
