@@ -77,8 +77,8 @@ usage (each command also has --help, with an example):
 
 exit status: 0 success, 2 bad input (scene errors are listed with file:line; a damaged
              checkpoint; an output folder of another run), 3 run stopped because it became
-             numerically unstable or stalled (watchdog), 130 / 143 stopped by SIGINT / SIGTERM (resumable),
-             1 other failure.
+             numerically unstable or stalled (watchdog), 130 / 143 stopped by SIGINT /
+             SIGTERM (resumable), 1 other failure.
 docs: docs/getting-started.md, docs/scene-format.md, docs/physics/contact-laws.md
 )";
 }
