@@ -9,8 +9,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "app/dem/dem_engine.hpp"
 #include "dem/setup.hpp"
@@ -52,6 +54,32 @@ struct ScratchDir {
 inline void writeText(const std::filesystem::path& path, const std::string& text) {
     std::ofstream out(path);
     out << text;
+}
+
+/// A CSV file (final.csv, series.csv) as rows of fields keyed by the header names; `header` gets
+/// the column names in order.
+inline std::vector<std::map<std::string, std::string>> readCsv(const std::filesystem::path& p,
+                                                               std::vector<std::string>& header) {
+    std::ifstream in(p);
+    std::string line;
+    const auto split = [](const std::string& l) {
+        std::vector<std::string> out;
+        std::stringstream ss(l);
+        std::string cell;
+        while (std::getline(ss, cell, ',')) out.push_back(cell);
+        return out;
+    };
+    std::getline(in, line);
+    header = split(line);
+    std::vector<std::map<std::string, std::string>> rows;
+    while (std::getline(in, line)) {
+        const auto cells = split(line);
+        EXPECT_EQ(cells.size(), header.size()) << line;
+        std::map<std::string, std::string> row;
+        for (std::size_t k = 0; k < cells.size() && k < header.size(); ++k) row[header[k]] = cells[k];
+        rows.push_back(std::move(row));
+    }
+    return rows;
 }
 
 inline std::string readText(const std::filesystem::path& path) {

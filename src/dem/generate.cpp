@@ -305,11 +305,8 @@ InitialParticles generateParticles(const SceneDef& scene, const std::vector<std:
             }
         } else {
             // Invalid lattices are reported by validate(); never loop or allocate on them.
-            const bool valid = b.spacing > 0 && b.xmax > b.xmin && b.ymax > b.ymin;
-            const double estimate = valid ? (b.xmax - b.xmin + b.spacing) * (b.ymax - b.ymin + b.spacing) /
-                                                (0.8 * b.spacing * b.spacing)
-                                          : 0.0;
-            if (!valid) continue;
+            const double estimate = latticeSiteEstimate(b);
+            if (estimate == 0) continue;
             if (estimate > 2e9) {
                 diags.error(b.loc, "block",
                             fmt::format("lattice would create about {:.3g} particles (limit 2e9); "

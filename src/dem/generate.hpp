@@ -35,6 +35,14 @@ inline Real initialMass(const InitialParticles& init, const InitialParticle& p, 
                             p.shape == model::kDiskShape ? Real(-1) : init.shapes.area[p.shape]);
 }
 
+/// Particles a lattice block will create, estimated before generation from its region and
+/// spacing (an upper estimate: region grown by one spacing, 0.8 of the square-lattice density
+/// bound); 0 for an invalid lattice, which validation reports.
+inline double latticeSiteEstimate(const model::BlockDef& b) noexcept {
+    if (!(b.spacing > 0 && b.xmax > b.xmin && b.ymax > b.ymin)) return 0;
+    return (b.xmax - b.xmin + b.spacing) * (b.ymax - b.ymin + b.spacing) / (0.8 * b.spacing * b.spacing);
+}
+
 /// Generates all particles; a particle's material id is the index of its material in
 /// `materialNames` (model::materialNames).
 /// Problems (a block that cannot place its particles) go to `diags`.

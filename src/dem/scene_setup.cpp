@@ -108,17 +108,14 @@ void checkStartOverlaps(const model::SceneDef& scene, const InitialParticles& in
     }
 }
 
-/// Particles the scene asks for, before generating any: explicit ones, random blocks' counts,
-/// lattice blocks' counts or their region / spacing estimate (may be inf).
+/// Particles the scene asks for, before generating any: explicit ones, blocks' counts, lattice
+/// blocks' estimates (may be inf).
 double plannedParticles(const model::SceneDef& scene) {
     double n = static_cast<double>(scene.particles.size());
-    for (const auto& b : scene.blocks) {
-        if (b.count >= 0 || b.lattice == model::BlockDef::Lattice::Random) {
-            n += static_cast<double>(std::max<std::int64_t>(b.count, 0));
-        } else if (b.spacing > 0 && b.xmax > b.xmin && b.ymax > b.ymin) {
-            n += (b.xmax - b.xmin + b.spacing) / b.spacing * ((b.ymax - b.ymin + b.spacing) / b.spacing);
-        }
-    }
+    for (const auto& b : scene.blocks)
+        n += b.count >= 0 || b.lattice == model::BlockDef::Lattice::Random
+                 ? static_cast<double>(std::max<std::int64_t>(b.count, 0))
+                 : latticeSiteEstimate(b);
     return n;
 }
 

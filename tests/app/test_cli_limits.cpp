@@ -7,9 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "../support.hpp"
 #include "edmd/kinetic_theory.hpp"
@@ -55,28 +53,9 @@ test::CommandResult runCase(const LimitCase& c, const std::string& command, cons
     return test::runGranulab(fmt::format("{} {}", command, target) + out, dir.path, 60);
 }
 
-/// Column `name` of a CSV header line.
-int columnOf(const std::string& header, const std::string& name) {
-    std::stringstream ss(header);
-    std::string cell;
-    for (int k = 0; std::getline(ss, cell, ','); ++k)
-        if (cell == name) return k;
-    return -1;
-}
-
-std::vector<std::vector<double>> readCsv(const std::filesystem::path& path, std::string& header) {
-    std::ifstream in(path);
-    std::getline(in, header);
-    std::vector<std::vector<double>> rows;
-    std::string line;
-    while (std::getline(in, line)) {
-        std::vector<double> row;
-        std::stringstream ss(line);
-        std::string cell;
-        while (std::getline(ss, cell, ',')) row.push_back(std::strtod(cell.c_str(), nullptr));
-        rows.push_back(row);
-    }
-    return rows;
+/// Field `name` of a CSV row as a number.
+double value(const std::map<std::string, std::string>& row, const std::string& name) {
+    return std::stod(row.at(name));
 }
 
 }  // namespace
@@ -184,13 +163,11 @@ TEST(Cli, PerfectlyInelasticGasRunsToItsEnd) {
     ASSERT_EQ(r.status, 0) << r.output;
     const auto js = nlohmann::json::parse(test::readText(scratch.path / "out/summary.json"));
     EXPECT_EQ(js["status"], "completed");
-    std::string header;
-    const auto rows = readCsv(scratch.path / "out/series.csv", header);
-    const int tau = columnOf(header, "tau"), kinetic = columnOf(header, "kinetic_energy");
+    std::vector<std::string> header;
+    const auto rows = test::readCsv(scratch.path / "out/series.csv", header);
     ASSERT_GE(rows.size(), 2u);
-    EXPECT_NEAR(rows.back()[static_cast<std::size_t>(tau)], 0.5, 1e-9);
-    EXPECT_LT(rows.back()[static_cast<std::size_t>(kinetic)],
-              rows.front()[static_cast<std::size_t>(kinetic)]);
+    EXPECT_NEAR(value(rows.back(), "tau"), 0.5, 1e-9);
+    EXPECT_LT(value(rows.back(), "kinetic_energy"), value(rows.front(), "kinetic_energy"));
 }
 
 // Case 4: growing spheres started cold. The elastic pre-run grew them (to jamming when cold, and
@@ -205,11 +182,10 @@ TEST(Cli, GrowingSpheresStartAtTheSceneFractionAndRunCold) {
                 temperature + " -q --out out_" + temperature,
             scratch.path, 120);
         ASSERT_EQ(r.status, 0) << r.output;
-        std::string header;
-        const auto rows = readCsv(scratch.path / ("out_" + temperature) / "series.csv", header);
-        const int fraction = columnOf(header, "volume_fraction");
+        std::vector<std::string> header;
+        const auto rows = test::readCsv(scratch.path / ("out_" + temperature) / "series.csv", header);
         ASSERT_FALSE(rows.empty());
-        EXPECT_NEAR(rows.front()[static_cast<std::size_t>(fraction)], 0.30, 1e-12);
+        EXPECT_NEAR(value(rows.front(), "volume_fraction"), 0.30, 1e-12);
     }
 }
 
@@ -274,17 +250,16 @@ TEST(Cli, MeanFreePathOfACoolingGasStaysAtTheEnskogValue) {
             "out",
         scratch.path, 120);
     ASSERT_EQ(r.status, 0) << r.output;
-    std::string header;
-    const auto rows = readCsv(scratch.path / "out/series.csv", header);
-    const int tau = columnOf(header, "tau"), path = columnOf(header, "mean_free_path");
+    std::vector<std::string> header;
+    const auto rows = test::readCsv(scratch.path / "out/series.csv", header);
     const double enskog = edmd::meanFreePath(2, 0.1, 1.0);
     int checked = 0;
     for (const auto& row : rows) {
-        const double t = row[static_cast<std::size_t>(tau)];
+        const double t = value(row, "tau");
         if (t < 0.3) continue;  // rows of less than one collision per particle: noisy
         ++checked;
         // Rows of >= 3000 collisions: ~2 % scatter; Enskog's g_2a at nu = 0.1: ~1 %.
-        EXPECT_NEAR(row[static_cast<std::size_t>(path)] / enskog, 1.0, 0.05) << "tau = " << t;
+        EXPECT_NEAR(value(row, "mean_free_path") / enskog, 1.0, 0.05) << "tau = " << t;
     }
     EXPECT_GE(checked, 3);
 }

@@ -276,37 +276,13 @@ TEST(PolygonOutput, ShapeOutsideThePoolThrows) {
                  std::invalid_argument);
 }
 
-/// final.csv rows split into fields, keyed by the header names.
-std::vector<std::map<std::string, std::string>> readCsv(const fs::path& p, std::vector<std::string>& header) {
-    std::ifstream in(p);
-    std::string line;
-    const auto split = [](const std::string& l) {
-        std::vector<std::string> out;
-        std::stringstream ss(l);
-        std::string cell;
-        while (std::getline(ss, cell, ',')) out.push_back(cell);
-        return out;
-    };
-    std::getline(in, line);
-    header = split(line);
-    std::vector<std::map<std::string, std::string>> rows;
-    while (std::getline(in, line)) {
-        const auto cells = split(line);
-        EXPECT_EQ(cells.size(), header.size()) << line;
-        std::map<std::string, std::string> row;
-        for (std::size_t k = 0; k < cells.size() && k < header.size(); ++k) row[header[k]] = cells[k];
-        rows.push_back(std::move(row));
-    }
-    return rows;
-}
-
 TEST(PolygonOutput, FinalCsvNamesShapesAndCountsCorners) {
     const test::ScratchDir scratch;
     const dem::World world = test::makeWorldFromToml(kPolygonScene);
     const fs::path path = scratch.path / "final.csv";
     writeFinalCsv(path.string(), world.store(), world.shapes(), {"grain", "rock"}, model::MassModel::Disk);
     std::vector<std::string> header;
-    const auto rows = readCsv(path, header);
+    const auto rows = test::readCsv(path, header);
     // Old columns first and in order, the new one appended.
     const std::vector<std::string> want = {"id",    "shape", "x",      "y",    "vx",       "vy",
                                            "angle", "omega", "radius", "mass", "material", "corners"};
@@ -350,7 +326,7 @@ material = "steel"
     const fs::path path = scratch.path / "final.csv";
     writeFinalCsv(path.string(), world.store(), world.shapes(), {"steel"}, model::MassModel::Sphere);
     std::vector<std::string> header;
-    const auto rows = readCsv(path, header);
+    const auto rows = test::readCsv(path, header);
     ASSERT_EQ(rows.size(), 2u);
     for (const auto& row : rows) {
         EXPECT_EQ(row.at("shape"), "sphere");
