@@ -304,14 +304,15 @@ private:
     std::string stallDiagnosis() const {
         const auto& E = m_scene.edmd;
         const auto& st = m_engine.stats();
-        const std::string where = m_stalledInPreRun ? "in the elastic pre-run (edmd.equilibrate)" : "";
+        const std::string where = m_stalledInPreRun ? " in the elastic pre-run (edmd.equilibrate)" : "";
+        const std::string sofar =
+            fmt::format("{} particle and {} wall collisions so far", st.collisions, st.wallCollisions);
         if (m_engine.stalled() == edmd::Stall::NoCollision)
             return fmt::format(
-                "the run stalled {}: no collision in {} events at t = {:.6g} s ({} collisions so far); the "
-                "particles do not meet (too dilute a gas, or speeds near zero: edmd.temperature = {:g}). "
-                "Raise "
-                "the volume fraction or the temperature, or set edmd.equilibrate = 0.",
-                where, 64 * m_engine.watchdogWindow(), m_engine.time(), st.collisions, E.temperature);
+                "the run stalled{}: no collision in {} events at t = {:.6g} s ({}); the particles do not "
+                "meet (too dilute a gas, or speeds near zero: edmd.temperature = {:g}). Raise the volume "
+                "fraction or the temperature, or set edmd.equilibrate = 0.",
+                where, 64 * m_engine.watchdogWindow(), m_engine.time(), sofar, E.temperature);
         std::string cause;
         const Real thermalSpeed = std::sqrt(E.temperature / E.mass);
         if (E.growthRate > 0)
@@ -323,18 +324,18 @@ private:
         else if (m_setup.config.tc == 0 && !m_stalledInPreRun)
             cause =
                 "inelastic collapse (edmd spec 4.3): infinitely many collisions in finite time; switch the "
-                "TC "
-                "model on (remove edmd.tc = 0, or set edmd.tc > 0) or raise edmd.restitution";
+                "TC model on (remove edmd.tc = 0, or set edmd.tc > 0) or raise edmd.restitution and "
+                "edmd.wall_restitution";
         else
             cause = fmt::format(
                 "particles locked in contact (a collision sequence that does not end); a TC time t_c = "
-                "{:.3g} s "
-                "longer than the contact sequence, or a higher edmd.restitution, resolves it",
+                "{:.3g} "
+                "s longer than the contact sequence, or a higher edmd.restitution, resolves it",
                 m_setup.config.tc);
         return fmt::format(
-            "the run stalled {}: simulated time stood still at t = {:.6g} s for {} events ({} collisions so "
-            "far). Likely cause: {}.",
-            where, m_engine.time(), m_engine.watchdogWindow(), st.collisions, cause);
+            "the run stalled{}: simulated time stood still at t = {:.6g} s for {} events ({}). "
+            "Likely cause: {}.",
+            where, m_engine.time(), m_engine.watchdogWindow(), sofar, cause);
     }
 
     analysis::PointSet snapshotPoints() const;
