@@ -39,6 +39,8 @@ public:
     virtual std::vector<std::uint32_t> spatialOrder(const model::ParticleStore&) { return {}; }
     /// Bytes held between calls.
     virtual std::size_t memoryBytes() const noexcept { return 0; }
+    /// Particles were removed and the slots renumbered: forget state kept by slot.
+    virtual void slotsRenumbered() {}
 };
 
 /// O(N^2) reference.
@@ -81,6 +83,12 @@ public:
     void findWallPairs(const model::ParticleStore& s, const model::WallSet& walls, Real margin,
                        std::vector<std::uint64_t>& out) override;
     std::size_t memoryBytes() const noexcept override;
+    void slotsRenumbered() override {
+        m_xs.clear();
+        m_ys.clear();
+        m_overlaps.clear();
+        m_tracked = 0;
+    }
 
 private:
     struct Endpoint {

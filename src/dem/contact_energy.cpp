@@ -32,7 +32,7 @@ Real areaEnergy(const model::ParticleStore& s, const model::WallSet& walls, cons
         Real l;
         if (wall) {
             const auto& seg = walls.segments[cl.second[p]];
-            g = area::wallGeometry(s, sc, i, seg.a, seg.b, cache);
+            g = area::wallGeometry(s, sc, walls, i, cl.second[p], cache);
             otherMat = seg.material;
             l = norm(g.point - Vec2{s.x[i], s.y[i]});
         } else {
@@ -78,9 +78,7 @@ Real contactEnergy(const model::ParticleStore& s, const model::WallSet& walls, c
                     std::uint32_t otherMat;
                     if (wall) {
                         const auto& seg = walls.segments[cl.second[p]];
-                        const auto g =
-                            geom::diskSegmentContact({s.x[i], s.y[i]}, s.radius[i], seg.a, seg.b,
-                                                     seg.startShared, seg.endShared, seg.prevDirection);
+                        const auto g = detail::wallContact(walls, seg, {s.x[i], s.y[i]}, s.radius[i]);
                         overlap = g.touching ? g.overlap : 0;
                         reff = s.radius[i];
                         otherMat = seg.material;

@@ -68,15 +68,31 @@ inline void wallQuad(Vec2 a, Vec2 b, Vec2 from, Real thickness, WallQuad& q) noe
     q.frame.inradius = 0.5 * std::min(thickness, len);
 }
 
-/// Geometry of particle i against wall segment [a, b] (the plate behind it), normal pushing i
-/// away from the wall.
-inline geom::AreaContact wallGeometry(const model::ParticleStore& s, ShapeContext& sc, std::uint32_t i,
-                                      Vec2 a, Vec2 b, geom::FeatureCache& cache) noexcept {
+/// Geometry of particle i against the wall of segment `segIndex`, normal pushing i away from the
+/// wall: a convex body wall is one immovable polygon (gc2d spec 3.7, one contact per grain); a
+/// polyline segment acts as the plate of thickness 2 r behind it. Not touching for a wall that is
+/// not solid (an outlet's lid after it opened).
+inline geom::AreaContact wallGeometry(const model::ParticleStore& s, ShapeContext& sc, const model::WallSet& walls,
+                                      std::uint32_t i, std::uint32_t segIndex, geom::FeatureCache& cache) noexcept {
+    const auto& seg = walls.segments[segIndex];
+    const model::Wall& wall = walls.walls[seg.wall];
+    if (!wall.solid) return {};
     const Vec2 xi{s.x[i], s.y[i]};
+    const bool polygon = s.shape[i] != model::kDiskShape;
+    if (wall.body) {
+        const Vec2* corners = walls.corners.data() + wall.firstSegment;
+        const int n = static_cast<int>(wall.segmentCount);
+        if (!polygon) return geom::circlePolygonContact(xi, s.radius[i], corners, n);
+        geom::PolygonFrame body;
+        body.corners = corners;
+        body.n = n;
+        body.centre = walls.bodyCentroid[seg.wall];
+        body.inradius = walls.bodyInradius[seg.wall];
+        return geom::trackPolygonContact(frameOf(s, sc, i), body, cache, sc.featureStats);
+    }
     WallQuad quad;
-    wallQuad(a, b, xi, 2 * s.radius[i], quad);
-    if (s.shape[i] != model::kDiskShape)
-        return geom::trackPolygonContact(frameOf(s, sc, i), quad.frame, cache, sc.featureStats);
+    wallQuad(seg.a, seg.b, xi, 2 * s.radius[i], quad);
+    if (polygon) return geom::trackPolygonContact(frameOf(s, sc, i), quad.frame, cache, sc.featureStats);
     return geom::circlePolygonContact(xi, s.radius[i], quad.world, 4);
 }
 

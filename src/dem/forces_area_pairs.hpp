@@ -133,14 +133,17 @@ void areaWalls(model::ParticleStore& s, const model::WallSet& walls, ContactList
         const Vec2 xi{s.x[i], s.y[i]};
         area::AreaPair c;
         c.wall = true;
-        c.g = area::wallGeometry(s, sc, i, seg.a, seg.b, list.features[p]);
+        c.g = area::wallGeometry(s, sc, walls, i, list.second[p], list.features[p]);
         if (!c.g.touching) {
             xiHist[p] = 0;
             areaHist[p] = 0;
             continue;
         }
         ++contacts;
-        const Vec2 wallVel = walls.walls[seg.wall].velocity;
+        // Wall point velocity, plus the belt's surface velocity (tangential only, gc2d 6.1).
+        const Vec2 t = perp(c.g.normal);
+        const Vec2 wallVel =
+            walls.velocityAt(seg.wall, c.g.point) + t * dot(walls.walls[seg.wall].surfaceVelocity, t);
         c.ri = c.g.point - xi;
         c.vi = pointVelocity(s.vx.data(), s.vy.data(), s.omega.data(), i, c.ri);
         c.vj = wallVel;

@@ -141,10 +141,10 @@ void diskWalls(model::ParticleStore& s, const model::WallSet& walls, ContactList
         const std::uint32_t i = list.first[p];
         GL_ASSERT(i < s.size() && list.second[p] < walls.segments.size(), "slot and segment in range");
         const auto& seg = walls.segments[list.second[p]];
+        const model::Wall& wall = walls.walls[seg.wall];
         const Vec2 c{s.x[i], s.y[i]};
         const Real r = s.radius[i];
-        const auto g =
-            geom::diskSegmentContact(c, r, seg.a, seg.b, seg.startShared, seg.endShared, seg.prevDirection);
+        const auto g = wallContact(walls, seg, c, r);
         Real* xiHist = trialHistory ? list.xiTrial.data() : list.xi.data();
         const bool rolling = laws.hasRolling();
         Real* zetaHist = trialHistory ? list.zetaTrial.data() : list.zeta.data();
@@ -155,7 +155,8 @@ void diskWalls(model::ParticleStore& s, const model::WallSet& walls, ContactList
         }
         ++contacts;
         const Vec2 n = g.normal;
-        const Vec2 wallVel = walls.walls[seg.wall].velocity;
+        // Wall point velocity at the contact, plus the belt's tangential surface velocity (gc2d 6.1).
+        const Vec2 wallVel = walls.velocityAt(seg.wall, g.point) + perp(n) * dot(wall.surfaceVelocity, perp(n));
         // Contact point at -r n from the centre: v_c = v - w r perp(n).
         const Real w = s.omega[i] * r;
         const Vec2 vrel{s.vx[i] + w * n.y - wallVel.x, s.vy[i] - w * n.x - wallVel.y};

@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "dem/contact/kernel.hpp"
 #include "dem/forces.hpp"
+#include "geom/segment.hpp"
 
 namespace granulab::dem::detail {
 // Internal linkage (an unnamed namespace), as when these functions lived in one .cpp: GCC inlines
@@ -78,6 +79,18 @@ inline Real tangentialIncrement(const DriftVelocities& d, std::uint32_t i, std::
 /// velocities, whichever columns are passed) [m/s].
 inline Vec2 pointVelocity(const Real* vx, const Real* vy, const Real* om, std::uint32_t i, Vec2 r) noexcept {
     return Vec2{vx[i], vy[i]} + perp(r) * om[i];
+}
+
+/// Geometry of a disk against the wall of `seg`: the whole convex body for a body wall (the list
+/// holds one pair per body), the segment otherwise; nothing for a wall that is not solid (yet).
+inline geom::SegmentContact wallContact(const model::WallSet& walls, const model::WallSegment& seg, Vec2 c,
+                                        Real r) noexcept {
+    const model::Wall& wall = walls.walls[seg.wall];
+    if (!wall.solid) return {};
+    if (wall.body)
+        return geom::diskConvexContact(c, r, walls.corners.data() + wall.firstSegment,
+                                       static_cast<int>(wall.segmentCount));
+    return geom::diskSegmentContact(c, r, seg.a, seg.b, seg.startShared, seg.endShared, seg.prevDirection);
 }
 
 }  // namespace

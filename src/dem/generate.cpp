@@ -34,22 +34,6 @@ using model::SizeDistDef;
 
 namespace {
 
-Real drawRadius(const SizeDistDef& d, CounterRng& rng) {
-    switch (d.kind) {
-        case SizeDistDef::Kind::Constant:
-            return d.value;
-        case SizeDistDef::Kind::Uniform:
-            return rng.uniform(d.min, d.max);
-        case SizeDistDef::Kind::Gaussian:
-            for (int attempt = 0; attempt < 1000000; ++attempt) {  // truncation by rejection
-                const Real r = d.mean + d.sigma * rng.normal();
-                if (r >= d.min && r <= d.max) return r;
-            }
-            return std::clamp(d.mean, d.min, d.max);
-    }
-    return d.value;
-}
-
 std::vector<Vec2> latticeSites(const BlockDef& b) {
     std::vector<Vec2> sites;
     const Real a = b.spacing;

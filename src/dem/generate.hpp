@@ -3,10 +3,12 @@
 // distributions, thermal velocities) into one list of initial particles, deterministically
 // from the scene seed (core/rng.hpp).
 #pragma once
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/rng.hpp"
 #include "model/mass_model.hpp"
 #include "model/scene_def.hpp"
 #include "model/shape_pool.hpp"
@@ -33,6 +35,23 @@ inline Real initialMass(const InitialParticles& init, const InitialParticle& p, 
                         Real rho) noexcept {
     return model::grainMass(massModel, rho, p.radius,
                             p.shape == model::kDiskShape ? Real(-1) : init.shapes.area[p.shape]);
+}
+
+/// One radius [m] drawn from a size distribution (truncated Gaussian by rejection).
+inline Real drawRadius(const model::SizeDistDef& d, CounterRng& rng) {
+    switch (d.kind) {
+        case model::SizeDistDef::Kind::Constant:
+            return d.value;
+        case model::SizeDistDef::Kind::Uniform:
+            return rng.uniform(d.min, d.max);
+        case model::SizeDistDef::Kind::Gaussian:
+            for (int attempt = 0; attempt < 1000000; ++attempt) {
+                const Real r = d.mean + d.sigma * rng.normal();
+                if (r >= d.min && r <= d.max) return r;
+            }
+            return std::clamp(d.mean, d.min, d.max);
+    }
+    return d.value;
 }
 
 /// Particles a lattice block will create, estimated before generation from its region and

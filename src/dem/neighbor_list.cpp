@@ -45,6 +45,7 @@ std::vector<OldHistory> collectHistory(const ContactList& list, const std::vecto
         std::uint32_t a = list.first[k], b = list.second[k];
         if (!oldToNew.empty()) {
             a = oldToNew[a];
+            if (a == kRemovedSlot || (bothAreSlots && oldToNew[b] == kRemovedSlot)) continue;  // removed
             if (bothAreSlots) {
                 b = oldToNew[b];
                 // Exchanging the bodies flips n and t and the relative velocity, so v_t and the
@@ -118,6 +119,19 @@ void NeighborList::rebuild(const model::ParticleStore& s, const model::WallSet& 
     broad.findPairs(s, skin, keys);
     fillList(pairs, keys, oldPairs, s, laws, trialHistory, [&](std::uint32_t j) { return s.material[j]; });
     broad.findWallPairs(s, walls, skin, keys);
+    // A convex body wall is one contact per particle: its segments' candidates become one pair,
+    // keyed by the body's first segment (gc2d spec 6.1).
+    bool anyBody = false;
+    for (auto& key : keys) {
+        const auto& wall = walls.walls[walls.segments[keySecond(key)].wall];
+        if (!wall.body) continue;
+        key = pairKey(keyFirst(key), wall.firstSegment);
+        anyBody = true;
+    }
+    if (anyBody) {
+        std::sort(keys.begin(), keys.end());
+        keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+    }
     fillList(wallPairs, keys, oldWall, s, laws, trialHistory,
              [&](std::uint32_t seg) { return walls.segments[seg].material; });
     x0 = s.x;

@@ -13,6 +13,7 @@
 #include "core/suggest.hpp"
 #include "dem/broad_phase.hpp"
 #include "dem/integrator.hpp"
+#include "dem/machine_setup.hpp"
 #include "geom/overlap_tests.hpp"
 #include "geom/polygon.hpp"
 #include "geom/segment.hpp"
@@ -83,15 +84,33 @@ void checkStartOverlaps(const model::SceneDef& scene, const InitialParticles& in
                fmt::format("particles {} and {} overlap by {:.4g} m at start (the other is defined at {})", i,
                            j, overlap, where));
     }
-    model::WallSet walls;
-    for (const auto& w : scene.walls) walls.addPolyline(w.name, w.points, w.closed, 0, {});
+    const model::WallSet walls = buildWalls(scene, model::materialNames(scene));
     grid.findWallPairs(s, walls, 0.0, pairs);
+    std::uint64_t lastBodyPair = ~std::uint64_t{0};
     for (const auto key : pairs) {
         const auto i = keyFirst(key);
         const auto& seg = walls.segments[keySecond(key)];
+        const auto& wall = walls.walls[seg.wall];
         const auto& p = init.particles[i];
         std::string depth;
-        if (corners[i].empty()) {
+        if (wall.body) {  // one report per particle and body: inside it, or an edge crossing it
+            if (pairKey(i, seg.wall) == lastBodyPair) continue;
+            const Vec2* bc = walls.corners.data() + wall.firstSegment;
+            const int bn = static_cast<int>(wall.segmentCount);
+            bool hit = false;
+            if (corners[i].empty()) {
+                const auto g = geom::diskConvexContact(p.position, p.radius, bc, bn);
+                hit = g.touching && g.overlap > 1e-12 * p.radius;
+            } else {
+                hit = geom::diskConvexContact(p.position, 0, bc, bn).touching;  // centre inside
+                for (std::uint32_t k = 0; k < wall.segmentCount && !hit; ++k) {
+                    const auto& e = walls.segments[wall.firstSegment + k];
+                    hit = geom::segmentEntersPolygon(e.a, e.b, corners[i]);
+                }
+            }
+            if (!hit) continue;
+            lastBodyPair = pairKey(i, seg.wall);
+        } else if (corners[i].empty()) {
             const Vec2 q = seg.a + (seg.b - seg.a) * geom::closestParameter(seg.a, seg.b, p.position);
             const Real overlap = p.radius - std::sqrt(norm2(p.position - q));
             if (overlap <= 1e-12 * p.radius) continue;
@@ -104,7 +123,8 @@ void checkStartOverlaps(const model::SceneDef& scene, const InitialParticles& in
             fmt::format(
                 "particle {} at ({:.6g}, {:.6g}) overlaps wall[{}]{} at start (the wall is defined at {}); "
                 "block regions bound the particle centres, so keep them a radius away from walls",
-                i, p.position.x, p.position.y, seg.wall, depth, scene.walls[seg.wall].loc.str()));
+                i, p.position.x, p.position.y, seg.wall, depth,
+                seg.wall < scene.walls.size() ? scene.walls[seg.wall].loc.str() : "'" + wall.name + "'"));
     }
 }
 

@@ -9,6 +9,7 @@
 
 #include "core/suggest.hpp"
 #include "dem/contact/registry.hpp"
+#include "dem/machine_setup.hpp"
 #include "model/material_names.hpp"
 
 namespace granulab::dem {
@@ -257,15 +258,14 @@ World makeWorld(const model::SceneDef& scene, const InitialParticles& initial) {
         }
         rmax = std::max(rmax, p.radius);
     }
-    model::WallSet walls;
-    for (std::size_t w = 0; w < scene.walls.size(); ++w) {
-        const auto& def = scene.walls[w];
-        const auto it = std::find(names.begin(), names.end(), def.material);
-        const auto mat = static_cast<std::uint32_t>(it - names.begin());
-        walls.addPolyline(def.name.empty() ? fmt::format("wall{}", w) : def.name, def.points, def.closed, mat,
-                          def.velocity);
-    }
+    model::WallSet walls = buildWalls(scene, names);
+    model::ShapePool pool = initial.shapes;
+    FlowConfig flow = buildFlow(scene, names, pool);
+    rmax = std::max(rmax, largestInsertedRadius(scene));  // the skin must cover inserted particles too
     WorldConfig config = makeWorldConfig(scene, rmax);
+    config.flow = std::move(flow);
+    config.gravitySchedule = buildGravitySchedule(scene);
+    config.lawChanges = buildLawChanges(scene, scene.dem.dt);
     for (const auto& def : scene.springs) {  // ids are generation indices, equal to slots at t = 0
         PullSpring sp;
         sp.id = static_cast<ParticleId>(def.particle);
@@ -278,7 +278,7 @@ World makeWorld(const model::SceneDef& scene, const InitialParticles& initial) {
         sp.to = def.to;
         config.springs.push_back(sp);
     }
-    return World(std::move(config), std::move(store), std::move(walls), std::move(laws), initial.shapes);
+    return World(std::move(config), std::move(store), std::move(walls), std::move(laws), std::move(pool));
 }
 
 }  // namespace granulab::dem

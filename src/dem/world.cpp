@@ -39,11 +39,73 @@ World::World(WorldConfig config, model::ParticleStore store, model::WallSet wall
       m_pool(std::move(shapes)),
       m_broad(makeBroadPhase(m_config.broadPhase)),
       m_integrator(makeIntegrator(m_config.integrator)),
-      m_wallForce(m_walls.walls.size()) {
+      m_wallForce(m_walls.walls.size()),
+      m_flow(m_config.flow),
+      m_baseLaws(m_laws) {
     if (!m_broad) throw std::invalid_argument("unknown broad phase " + m_config.broadPhase);
     if (!m_integrator) throw std::invalid_argument("unknown integrator " + m_config.integrator.name);
-    m_minRadius = m_store.size() ? *std::min_element(m_store.radius.begin(), m_store.radius.end()) : 0;
+    m_minRadius = m_store.size() ? *std::min_element(m_store.radius.begin(), m_store.radius.end()) : 1e300;
     m_shapes.anyPolygon = m_pool.size() > 0;
+    for (const ParticleId id : m_store.id) m_nextId = std::max<ParticleId>(m_nextId, id + 1);
+}
+
+Real World::totalMass() const noexcept {
+    Real m = 0;
+    for (const Real mi : m_store.mass) m += mi;
+    return m;
+}
+
+void World::applyLawChanges() {
+    const auto& changes = m_config.lawChanges;
+    bool changed = false;
+    while (m_lawChangesDone < changes.size() && changes[m_lawChangesDone].step <= m_step) {
+        m_laws = changes[m_lawChangesDone++].laws;
+        changed = true;
+    }
+    if (changed) rebuildNeighbors();  // the contact buckets follow the laws' forms
+}
+
+void World::exchangeParticles() {
+    const Real t = time();
+    const std::vector<std::uint32_t> leaving = m_flow.leaving(m_store, t);
+    std::vector<NewParticle> entering = m_flow.entering(m_store, m_walls, m_pool, t, m_config.dt);
+    if (leaving.empty() && entering.empty()) return;
+    std::vector<std::uint32_t> oldToNew;
+    if (!leaving.empty()) {
+        const std::size_t n = m_store.size();
+        oldToNew.assign(n, kRemovedSlot);
+        std::vector<std::uint32_t> keep;
+        keep.reserve(n - leaving.size());
+        std::size_t next = 0;
+        for (std::uint32_t i = 0; i < n; ++i) {
+            if (next < leaving.size() && leaving[next] == i) {
+                ++next;
+                continue;
+            }
+            oldToNew[i] = static_cast<std::uint32_t>(keep.size());
+            keep.push_back(i);
+        }
+        m_store.keep(keep);
+        m_integrator->permute(keep);
+        auto& springs = m_config.springs;  // a spring whose particle left is gone with it
+        springs.erase(std::remove_if(springs.begin(), springs.end(),
+                                     [&](const PullSpring& sp) { return oldToNew[sp.slot] == kRemovedSlot; }),
+                      springs.end());
+        for (auto& sp : springs) sp.slot = oldToNew[sp.slot];
+        m_broad->slotsRenumbered();
+    }
+    const Vec2 g = gravityAt(t);
+    for (const NewParticle& p : entering) {
+        const std::size_t k = m_store.add(m_nextId++, p.position, p.velocity, p.angle, p.omega, p.radius, p.mass,
+                                          p.inertia, p.material, p.shape);
+        // Until the next force evaluation the new particle feels its weight (it touches nothing).
+        m_store.fx[k] = p.mass * g.x;
+        m_store.fy[k] = p.mass * g.y;
+        if (p.shape != model::kDiskShape) m_shapes.anyPolygon = true;
+    }
+    m_flow.bookInserted(entering);
+    m_minRadius = m_store.size() ? *std::min_element(m_store.radius.begin(), m_store.radius.end()) : 1e300;
+    rebuildNeighbors(std::move(oldToNew));
 }
 
 void World::evaluateForces(const BodyForces& body, const DriftVelocities& drift, bool trial) {
@@ -54,7 +116,7 @@ void World::evaluateForces(const BodyForces& body, const DriftVelocities& drift,
 
 BodyForces World::bodyForcesAt(std::int64_t step) const noexcept {
     BodyForces b;
-    b.gravity = m_config.gravity;
+    b.gravity = gravityAt(static_cast<Real>(step) * m_config.dt);
     b.overlapGuard = m_config.overlapGuard;
     b.springs = m_config.springs.empty() ? nullptr : &m_config.springs;
     b.time = static_cast<Real>(step) * m_config.dt;
@@ -66,17 +128,22 @@ BodyForces World::bodyForcesAt(std::int64_t step) const noexcept {
     return b;
 }
 
-void World::rebuildNeighbors() {
-    std::vector<std::uint32_t> oldToNew;
+void World::rebuildNeighbors(std::vector<std::uint32_t> oldToNew) {
     const int every = m_config.sortEveryRebuilds;
     if (every > 0 && m_list.builds % static_cast<std::uint64_t>(every) == 0) {
         const auto order = m_broad->spatialOrder(m_store);
         if (!order.empty()) {
             m_store.permute(order);
             m_integrator->permute(order);
-            oldToNew.resize(order.size());
-            for (std::size_t k = 0; k < order.size(); ++k) oldToNew[order[k]] = static_cast<std::uint32_t>(k);
-            for (auto& sp : m_config.springs) sp.slot = oldToNew[sp.slot];
+            std::vector<std::uint32_t> sorted(order.size());
+            for (std::size_t k = 0; k < order.size(); ++k) sorted[order[k]] = static_cast<std::uint32_t>(k);
+            for (auto& sp : m_config.springs) sp.slot = sorted[sp.slot];
+            if (oldToNew.empty()) {
+                oldToNew = std::move(sorted);
+            } else {  // removal, then the sort: compose (inserted particles have no history)
+                for (auto& k : oldToNew)
+                    if (k != kRemovedSlot) k = sorted[k];
+            }
         }
     }
     m_list.rebuild(m_store, m_walls, m_config.skin, time(), *m_broad, m_laws, oldToNew,
@@ -84,7 +151,7 @@ void World::rebuildNeighbors() {
 }
 
 void World::initialize() {
-    m_walls.setTime(time());
+    m_walls.place(time());
     rebuildNeighbors();
     // Set-up evaluation: nothing has moved yet, so no tangential displacement (drift = none).
     evaluateForces(bodyForcesAt(m_step), DriftVelocities{}, false);
@@ -99,9 +166,10 @@ std::uint32_t World::step() {
         maxSpeed = m_integrator->predict(m_store, dt);
     }
     ++m_step;
-    {  // 8 scene updaters (walls move before the forces of the new time are evaluated)
+    {  // 8 scene updaters (walls move and laws change before the forces of the new time)
         ScopedStage t(m_timers, Stage::Updaters);
-        m_walls.setTime(time());
+        m_walls.advance(time(), dt, m_wallForce);
+        if (m_lawChangesDone < m_config.lawChanges.size()) applyLawChanges();
     }
     if (!std::isfinite(maxSpeed)) status |= kStepNonFinite;
     // A particle, or a wall sweeping through particles, moving half a radius in one step tunnels.
@@ -130,17 +198,22 @@ std::uint32_t World::step() {
     }
     if (trial) m_list.commitHistory();
     if (m_stats.maxRelativeOverlap >= 1.0) status |= kStepDeepOverlap;
+    if (m_flow.active()) {  // 8 particles leave and enter (the only place N changes)
+        ScopedStage t(m_timers, Stage::Updaters);
+        exchangeParticles();
+    }
     return status;
 }
 
 Energies World::energies() const noexcept {
     Energies e;
     const auto& s = m_store;
+    const Vec2 g = gravityAt(time());
     for (std::size_t i = 0; i < s.size(); ++i) {
         e.kinetic += 0.5 * s.mass[i] * (s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i]);
         const Real inertia = s.invInertia[i] > 0 ? 1.0 / s.invInertia[i] : 0.0;
         e.rotational += 0.5 * inertia * s.omega[i] * s.omega[i];
-        e.potential -= s.mass[i] * (m_config.gravity.x * s.x[i] + m_config.gravity.y * s.y[i]);
+        e.potential -= s.mass[i] * (g.x * s.x[i] + g.y * s.y[i]);
     }
     e.elastic = contactEnergy(m_store, m_walls, m_list, m_laws, m_pool);
     return e;
@@ -160,7 +233,7 @@ std::size_t World::memoryBytes() const noexcept {
 }
 
 namespace {
-constexpr std::uint64_t kStateMagic = 0x31454d44424c4e47ULL;  // "GNLBDME1"
+constexpr std::uint64_t kStateMagic = 0x32454d44424c4e47ULL;  // "GNLBDME2"
 
 void writeList(std::ostream& os, const ContactList& l) {
     writeVector(os, l.first);
@@ -194,6 +267,10 @@ void World::saveState(std::ostream& os) const {
     writePod(os, m_list.builds);
     writePod(os, m_forceEvaluations);
     m_integrator->save(os);
+    m_walls.save(os);
+    m_pool.save(os);
+    m_flow.save(os);
+    writePod<std::uint64_t>(os, m_nextId);
 }
 
 void World::loadState(std::istream& is) {
@@ -202,18 +279,12 @@ void World::loadState(std::istream& is) {
     const std::size_t particles = m_store.size();
     m_store.load(is);
     const auto& s = m_store;
-    if (s.size() != particles) throw std::runtime_error("checkpoint corrupt (particle count)");
+    // With sources and outlets the count changes during a run; otherwise it is the scene's.
+    if (s.size() != particles && !m_flow.active()) throw std::runtime_error("checkpoint corrupt (particle count)");
     for (const auto* col : {&s.x, &s.y, &s.vx, &s.vy, &s.angle, &s.omega, &s.radius, &s.mass, &s.invMass})
         if (!std::all_of(col->begin(), col->end(), [](Real v) { return std::isfinite(v); }))
             throw std::runtime_error(
                 "checkpoint corrupt (a particle position, velocity or mass is not finite)");
-    for (std::size_t k = 0; k < s.size(); ++k)
-        if (s.material[k] >= m_laws.materialCount() ||
-            (s.shape[k] != model::kDiskShape && s.shape[k] >= m_pool.size()) || !(s.radius[k] > 0))
-            throw std::runtime_error("checkpoint corrupt (particle material, shape or radius)");
-    for (auto& sp : m_config.springs)  // slots of the restored (possibly re-sorted) store
-        for (std::uint32_t k = 0; k < s.size(); ++k)
-            if (s.id[k] == sp.id) sp.slot = k;
     readList(is, m_list.pairs);
     readList(is, m_list.wallPairs);
     // Slots and segments index the arrays of the step: a damaged one must not reach it.
@@ -238,8 +309,30 @@ void World::loadState(std::istream& is) {
             l->areaOldTrial.assign(l->areaOld.size(), 0.0);
         }
     }
-    m_walls.setTime(time());
-    m_minRadius = s.size() ? *std::min_element(s.radius.begin(), s.radius.end()) : 0;
+    m_walls.load(is, time());
+    m_pool.load(is);
+    m_flow.load(is);
+    m_nextId = readPod<std::uint64_t>(is);
+    for (std::size_t k = 0; k < s.size(); ++k)
+        if (s.material[k] >= m_laws.materialCount() ||
+            (s.shape[k] != model::kDiskShape && s.shape[k] >= m_pool.size()) || !(s.radius[k] > 0) ||
+            s.id[k] >= m_nextId)
+            throw std::runtime_error("checkpoint corrupt (particle material, shape, radius or id)");
+    m_shapes.anyPolygon = m_pool.size() > 0;
+    auto& springs = m_config.springs;  // slots of the restored store; a spring's particle may have left
+    for (auto& sp : springs) {
+        sp.slot = kRemovedSlot;
+        for (std::uint32_t k = 0; k < s.size(); ++k)
+            if (s.id[k] == sp.id) sp.slot = k;
+    }
+    springs.erase(std::remove_if(springs.begin(), springs.end(),
+                                 [](const PullSpring& sp) { return sp.slot == kRemovedSlot; }),
+                  springs.end());
+    m_laws = m_baseLaws;  // the laws in force at the restored step
+    m_lawChangesDone = 0;
+    while (m_lawChangesDone < m_config.lawChanges.size() && m_config.lawChanges[m_lawChangesDone].step <= m_step)
+        m_laws = m_config.lawChanges[m_lawChangesDone++].laws;
+    m_minRadius = s.size() ? *std::min_element(s.radius.begin(), s.radius.end()) : 1e300;
     // Wall forces of the restored step are re-derived at the next step; stats start empty.
     m_stats = ForceStats{};
 }

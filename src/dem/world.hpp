@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The DEM world and its straight-line step (DESIGN.md "The DEM step"), each stage timed. In the
-// order they run: 1 predict, 8 scene updaters (moving walls, before the forces of the new time),
+// order they run: 1 predict, 8 scene updaters (walls move and law changes apply before the forces
+// of the new time; particles leave and enter at the end of the step, the only place N changes),
 // 2+3+5 neighbour check and, when needed, rebuild (broad phase, history transfer), 4+6 forces
 // (polygon world corners, narrow phase fused with the laws, body forces), 7 correct; 4+6+7 repeat
 // until an iterating integrator accepts the step. Stage 9 (observers) runs in the caller, which
@@ -9,6 +10,7 @@
 #include <cstdint>
 #include <iosfwd>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +20,8 @@
 #include "dem/integrator.hpp"
 #include "dem/law_table.hpp"
 #include "dem/neighbor_list.hpp"
+#include "dem/particle_flow.hpp"
+#include "dem/schedules.hpp"
 #include "model/particle_store.hpp"
 #include "model/walls.hpp"
 
@@ -42,6 +46,14 @@ struct WorldConfig {
     IntegratorParams integrator;
     std::string broadPhase = "cell_grid";
     std::vector<PullSpring> springs;  ///< slots refer to the store given to the World
+    std::optional<GravitySchedule> gravitySchedule;  ///< replaces `gravity` when set (gc2d 6.6)
+    FlowConfig flow;                                 ///< sources, inlets, outlets (step 8)
+    /// Contact laws replaced at a step (gc2d 6.7: friction or cohesion switched off at t).
+    struct LawChange {
+        std::int64_t step = 0;
+        LawTable laws;
+    };
+    std::vector<LawChange> lawChanges;  ///< ascending steps
 };
 
 /// Bit flags returned by World::step (STYLE.md: step() never throws).
@@ -83,6 +95,12 @@ public:
     const model::ShapePool& shapes() const noexcept { return m_pool; }
     /// Springs with their current slots.
     const std::vector<PullSpring>& springs() const noexcept { return m_config.springs; }
+    /// Sources, inlets and outlets with their counters.
+    const ParticleFlow& flow() const noexcept { return m_flow; }
+    /// Gravity [m/s^2] at the current time (the schedule's, if any).
+    Vec2 gravity() const noexcept { return gravityAt(time()); }
+    /// Total mass of the particles [kg].
+    Real totalMass() const noexcept;
     /// Total contact force [N] on each wall at the last force evaluation.
     const std::vector<Vec2>& wallForce() const noexcept { return m_wallForce; }
     const StageTimers<Stage>& timers() const noexcept { return m_timers; }
@@ -102,9 +120,17 @@ public:
     void loadState(std::istream& is);
 
 private:
-    void rebuildNeighbors();
+    /// `removed` maps old slots to new ones (kRemovedSlot: removed) after particles left.
+    void rebuildNeighbors(std::vector<std::uint32_t> removed = {});
     void evaluateForces(const BodyForces& body, const DriftVelocities& drift, bool trial);
     BodyForces bodyForcesAt(std::int64_t step) const noexcept;
+    Vec2 gravityAt(Real t) const noexcept {
+        return m_config.gravitySchedule ? dem::gravityAt(*m_config.gravitySchedule, t) : m_config.gravity;
+    }
+    /// Stage 8 at the end of a step: particles leave through outlets and enter from sources.
+    void exchangeParticles();
+    /// Applies the law changes due at the current step.
+    void applyLawChanges();
 
     WorldConfig m_config;
     model::ParticleStore m_store;
@@ -121,6 +147,10 @@ private:
     std::int64_t m_step = 0;
     std::uint64_t m_forceEvaluations = 0;
     Real m_minRadius = 0;
+    ParticleFlow m_flow;
+    ParticleId m_nextId = 0;         ///< id of the next inserted particle
+    std::size_t m_lawChangesDone = 0;  ///< entries of m_config.lawChanges applied
+    LawTable m_baseLaws;             ///< the laws of t = 0
 };
 
 }  // namespace granulab::dem

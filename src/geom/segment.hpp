@@ -61,4 +61,54 @@ inline SegmentContact diskSegmentContact(Vec2 c, Real r, Vec2 a, Vec2 b, bool st
     return out;
 }
 
+/// Disk (centre c, radius r) against a convex polygon body (corners counter-clockwise): one
+/// contact with the whole body, whatever corner or edge is nearest (gc2d spec 6.1: a wall is an
+/// immovable convex particle). Outside: the closest boundary point; centre inside: the nearest
+/// edge, overlap = r + depth of the centre. `reach` as in diskSegmentContact.
+inline SegmentContact diskConvexContact(Vec2 c, Real r, const Vec2* corners, int n, Real reach = 0) noexcept {
+    SegmentContact out;
+    Real maxOut = -1e300;  // largest signed distance of c outside an edge line [m]
+    int edge = 0;
+    for (int k = 0; k < n; ++k) {
+        const Vec2 a = corners[k], b = corners[(k + 1) % n];
+        const Vec2 d = b - a;
+        const Real len = norm(d);
+        if (!(len > 0)) continue;
+        const Real outside = -cross(d, c - a) / len;  // > 0 on the right of a -> b: outside a ccw polygon
+        if (outside > maxOut) {
+            maxOut = outside;
+            edge = k;
+        }
+    }
+    const Real limit = r + reach;
+    if (maxOut <= 0) {  // centre inside: push out through the nearest edge
+        const Vec2 a = corners[edge], b = corners[(edge + 1) % n];
+        const Vec2 d = b - a;
+        out.touching = true;
+        out.overlap = r - maxOut;
+        out.normal = Vec2{d.y, -d.x} / norm(d);
+        out.point = c - out.normal * maxOut;
+        return out;
+    }
+    if (maxOut >= limit) return out;  // separated by an edge line: no contact
+    Real best2 = 1e300;
+    Vec2 closest;
+    for (int k = 0; k < n; ++k) {
+        const Vec2 a = corners[k], b = corners[(k + 1) % n];
+        const Vec2 q = a + (b - a) * closestParameter(a, b, c);
+        const Real d2 = norm2(c - q);
+        if (d2 < best2) {
+            best2 = d2;
+            closest = q;
+        }
+    }
+    if (best2 >= limit * limit) return out;
+    const Real dist = std::sqrt(best2);
+    out.touching = true;
+    out.overlap = r - dist;
+    out.point = closest;
+    out.normal = (c - closest) / dist;  // dist >= maxOut > 0
+    return out;
+}
+
 }  // namespace granulab::geom

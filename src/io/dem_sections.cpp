@@ -10,6 +10,7 @@
 #include <map>
 
 #include "core/suggest.hpp"
+#include "io/dem_machine_sections.hpp"
 #include "io/toml_table_reader.hpp"
 
 namespace granulab::io {
@@ -42,6 +43,8 @@ void readDem(TableReader& r, model::DemDef& dem) {
         dem.damping.push_back(w);
     });
 }
+
+}  // namespace
 
 void readSize(TableReader& parent, const std::string& key, model::SizeDistDef& size) {
     const toml::node* n = parent.node(key);
@@ -76,6 +79,8 @@ void readSize(TableReader& parent, const std::string& key, model::SizeDistDef& s
     }
     r.finish();
 }
+
+namespace {
 
 void readContact(TableReader& r, model::ContactDef& c) {
     c.loc = r.loc();
@@ -267,8 +272,30 @@ void readWall(TableReader& r, model::WallDef& w) {
     if (!r.points("points", w.points) && !r.table().get("points"))
         r.diags().error(w.loc, r.keyPath("points"), "missing: [[x0, y0], [x1, y1], ...] in m");
     r.boolean("closed", w.closed);
+    r.choice("kind", w.kind, {"auto", "polyline", "polygon"});
+    r.vec2("offset", w.offset);
+    r.number("angle", w.angle);
     r.string("material", w.material);
     r.vec2("velocity", w.velocity);
+    r.vec2("surface_velocity", w.surfaceVelocity);
+    r.choice("vib_type", w.vibType, {"cosine", "sawtooth", "tapping", "triangle"});
+    r.number("vib_direction", w.vibDirection);
+    r.number("vib_width", w.vibWidth);
+    r.number("vib_frequency", w.vibFrequency);
+    std::vector<Real> window;
+    if (r.numbers("vib_window", window, 2)) {
+        w.vibFrom = window[0];
+        w.vibTo = window[1];
+    }
+    Real force = 0;
+    if (r.number("piston_force", force)) w.pistonForce = force;
+    r.number("piston_direction", w.pistonDirection);
+    r.number("piston_v_max", w.pistonMaxSpeed);
+    r.number("piston_gain", w.pistonGain);
+    r.number("piston_from", w.pistonFrom);
+    r.number("omega", w.omega);
+    Vec2 pivot;
+    if (r.vec2("pivot", pivot)) w.pivot = pivot;
 }
 
 /// [[spring]]: gc2d DRAG spring (spec section 3.8).
@@ -331,6 +358,7 @@ void readDemSections(TableReader& root, model::SceneDef& scene) {
         readSpring(t, sp);
         scene.springs.push_back(sp);
     });
+    readMachineSections(root, scene);
 }
 
 }  // namespace
@@ -338,7 +366,9 @@ void readDemSections(TableReader& root, model::SceneDef& scene) {
 SceneSections demSceneSections() {
     SceneSections s;
     s.engine = "dem";
-    s.sections = {"dem", "material", "contact", "shape", "particle", "block", "wall", "spring"};
+    s.sections = {"dem",      "material", "contact", "shape",  "particle", "block",   "wall",
+                  "spring",   "drum",     "source",  "inlet",  "outlet",   "boundary", "gravity",
+                  "change"};
     s.required = "dem";
     s.requiredHint = "needs at least dt";
     s.needsEndTime = true;

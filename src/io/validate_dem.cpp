@@ -14,6 +14,7 @@
 #include "geom/polygon.hpp"
 #include "geom/segment.hpp"
 #include "io/shape_checks.hpp"
+#include "io/validate_machines.hpp"
 #include "model/material_names.hpp"
 #include "model/size_bounds.hpp"
 
@@ -198,6 +199,7 @@ void checkStatic(const model::SceneDef& sc, Checker& c, const std::vector<std::s
 void checkDemDef(const model::SceneDef& scene, Diagnostics& diags, std::vector<std::string>& warnings) {
     Checker checker(diags);
     checkStatic(scene, checker, model::materialNames(scene));
+    checkMachineDefs(scene, diags, model::materialNames(scene));
     checkShapes(scene, diags, warnings);
 }
 

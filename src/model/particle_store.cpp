@@ -2,6 +2,7 @@
 // ParticleStore: append, reorder and checkpoint the columns (DESIGN.md "Particle state").
 #include "model/particle_store.hpp"
 
+#include <algorithm>
 #include <istream>
 #include <ostream>
 #include <stdexcept>
@@ -14,7 +15,7 @@ namespace granulab::model {
 namespace {
 template <class T>
 void permuteColumn(std::vector<T>& col, const std::vector<std::uint32_t>& order) {
-    std::vector<T> out(col.size());
+    std::vector<T> out(order.size());  // a shorter order selects (particles removed)
     for (std::size_t k = 0; k < order.size(); ++k) {
         GL_ASSERT(order[k] < col.size(), "permutation entry is a slot");
         out[k] = col[order[k]];
@@ -58,6 +59,12 @@ std::size_t ParticleStore::add(ParticleId pid, Vec2 pos, Vec2 vel, Real angle0, 
 void ParticleStore::permute(const std::vector<std::uint32_t>& order) {
     GL_ASSERT(order.size() == size() && consistent(), "a permutation of all slots");
     forEachColumn([&](auto& col) { permuteColumn(col, order); });
+}
+
+void ParticleStore::keep(const std::vector<std::uint32_t>& slots) {
+    GL_ASSERT(slots.size() <= size() && consistent(), "a selection of the slots");
+    GL_ASSERT(std::is_sorted(slots.begin(), slots.end()), "kept slots ascending");
+    forEachColumn([&](auto& col) { permuteColumn(col, slots); });
 }
 
 void ParticleStore::save(std::ostream& os) const {

@@ -50,6 +50,9 @@ struct ParticleStore {
                     Real inertia, std::uint32_t mat, std::uint32_t shapeIndex = kDiskShape);
     /// Reorders all columns: new slot k holds old slot order[k] (order is a permutation of the slots).
     void permute(const std::vector<std::uint32_t>& order);
+    /// Removes every particle whose slot is not in `slots` (ascending); the kept ones keep their
+    /// relative order (new slot k holds old slot slots[k]).
+    void keep(const std::vector<std::uint32_t>& slots);
 
     /// Writes every column (size, then raw values; core/binary_io.hpp) in column order: the particle
     /// part of a DEM checkpoint.

@@ -12,6 +12,7 @@
 #include "core/types.hpp"
 #include "model/dem_def.hpp"
 #include "model/edmd_def.hpp"
+#include "model/machine_def.hpp"
 
 namespace granulab::model {
 
@@ -46,6 +47,7 @@ struct SceneDef {
     std::vector<BlockDef> blocks;
     std::vector<WallDef> walls;
     std::vector<SpringDef> springs;
+    MachineDefs machines;  ///< drums, sources, inlets, outlets, boundaries, gravity schedule, changes
     OutputDef output;
     EdmdDef edmd;
 };

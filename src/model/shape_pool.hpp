@@ -8,6 +8,7 @@
 // corners are computed (dem::ShapeContext::update in dem/shape_context.cpp, gc2d Eq. 2.35).
 #pragma once
 #include <cstdint>
+#include <iosfwd>
 #include <vector>
 
 #include "core/types.hpp"
@@ -32,6 +33,9 @@ struct ShapePool {
     std::uint32_t add(const std::vector<Vec2>& ccwCorners);
     /// Corners of shape k in the body frame.
     std::vector<Vec2> shapeCorners(std::uint32_t k) const;
+    /// Checkpoint of the pool (sources add grains during a run); load() checks consistency.
+    void save(std::ostream& os) const;
+    void load(std::istream& is);
     std::size_t memoryBytes() const noexcept {
         return corners.capacity() * sizeof(Vec2) + (start.capacity() + count.capacity()) * 4 +
                (area.capacity() + secondMoment.capacity() + circumradius.capacity() + inradius.capacity()) *

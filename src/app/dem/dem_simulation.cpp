@@ -22,6 +22,12 @@ namespace granulab::app {
 
 namespace {
 
+/// Walls whose displacement goes to series.csv (translating ones: piston, vibration, velocity).
+bool tracksPosition(const model::Wall& w) noexcept {
+    using K = model::WallDriver::Kind;
+    return w.driver.kind == K::Velocity || w.driver.kind == K::Vibration || w.driver.kind == K::Piston;
+}
+
 class DemSimulation final : public Simulation {
 public:
     DemSimulation(const model::SceneDef& scene, dem::PreparedScene prepared, const SimulationOptions& options)
@@ -30,7 +36,8 @@ public:
           m_warnings(std::move(prepared.warnings)),
           m_world(dem::makeWorld(scene, prepared.initial)),
           m_dt(scene.dem.dt),
-          m_endStep(dem::stepsIn(scene.run.endTime, scene.dem.dt)) {}
+          m_endStep(dem::stepsIn(scene.run.endTime, scene.dem.dt)),
+          m_initialParticles(m_world.store().size()) {}
 
     double time() const override { return m_world.time(); }
     std::uint64_t count() const override { return static_cast<std::uint64_t>(m_world.stepIndex()); }
@@ -139,6 +146,23 @@ public:
             c.push_back("wall_" + w.name + "_fx");
             c.push_back("wall_" + w.name + "_fy");
         }
+        for (const auto& w : m_world.walls().walls)
+            if (tracksPosition(w)) {
+                c.push_back("wall_" + w.name + "_dx");
+                c.push_back("wall_" + w.name + "_dy");
+            }
+        if (m_scene.machines.gravity.present) {
+            c.push_back("gravity_x");
+            c.push_back("gravity_y");
+        }
+        if (m_world.flow().active()) {  // particles in and out (cumulative counts and masses)
+            for (const char* k : {"particles", "mass", "inserted", "skipped", "removed", "mass_in", "mass_out"})
+                c.push_back(k);
+            for (const auto& o : m_world.flow().config().outlets) {
+                c.push_back("outlet_" + o.name + "_removed");
+                c.push_back("outlet_" + o.name + "_mass");
+            }
+        }
         return c;
     }
 
@@ -159,6 +183,27 @@ public:
         for (const auto& f : m_world.wallForce()) {
             row.push_back(f.x);
             row.push_back(f.y);
+        }
+        for (const auto& w : m_world.walls().walls)
+            if (tracksPosition(w)) {
+                row.push_back(w.displacement.x);
+                row.push_back(w.displacement.y);
+            }
+        if (m_scene.machines.gravity.present) {
+            const Vec2 g = m_world.gravity();
+            row.push_back(g.x);
+            row.push_back(g.y);
+        }
+        if (m_world.flow().active()) {
+            const auto& fc = m_world.flow().counters();
+            for (const double v : {static_cast<double>(m_world.store().size()), m_world.totalMass(),
+                                   static_cast<double>(fc.inserted), static_cast<double>(fc.skipped),
+                                   static_cast<double>(fc.removed), fc.massIn, fc.massOut})
+                row.push_back(v);
+            for (std::size_t o = 0; o < fc.outletRemoved.size(); ++o) {
+                row.push_back(static_cast<double>(fc.outletRemoved[o]));
+                row.push_back(fc.outletMass[o]);
+            }
         }
         m_lastEnergy = e;
         return row;
@@ -227,6 +272,35 @@ public:
             walls.push_back({{"name", m_world.walls().walls[w].name},
                              {"force", {m_world.wallForce()[w].x, m_world.wallForce()[w].y}}});
         js["wall_forces"] = walls;
+        if (m_world.flow().active()) {
+            const auto& fc = m_world.flow().counters();
+            const auto& cfg = m_world.flow().config();
+            nlohmann::json flow;
+            flow["inserted"] = fc.inserted;
+            flow["skipped"] = fc.skipped;
+            flow["removed"] = fc.removed;
+            flow["mass_in"] = fc.massIn;
+            flow["mass_out"] = fc.massOut;
+            flow["mass"] = m_world.totalMass();
+            nlohmann::json sources = nlohmann::json::array(), inlets = nlohmann::json::array(),
+                           outlets = nlohmann::json::array();
+            for (std::size_t k = 0; k < cfg.sources.size(); ++k)
+                sources.push_back({{"name", cfg.sources[k].name},
+                                   {"drops", fc.sourceDrops[k]},
+                                   {"skipped", fc.sourceSkipped[k]}});
+            for (std::size_t k = 0; k < cfg.inlets.size(); ++k)
+                inlets.push_back({{"name", cfg.inlets[k].name},
+                                  {"emitted", fc.inletEmitted[k]},
+                                  {"skipped", fc.inletSkipped[k]}});
+            for (std::size_t k = 0; k < cfg.outlets.size(); ++k)
+                outlets.push_back({{"name", cfg.outlets[k].name},
+                                   {"removed", fc.outletRemoved[k]},
+                                   {"mass", fc.outletMass[k]}});
+            flow["sources"] = sources;
+            flow["inlets"] = inlets;
+            flow["outlets"] = outlets;
+            js["flow"] = flow;
+        }
         if (report.benchmarkSeconds >= 0) {
             const double bw = report.benchmarkSeconds;
             js["benchmark"] = {
@@ -279,7 +353,7 @@ public:
         // The integrator's state is part of the checkpoint; dt, particles and walls pin the scene.
         return {{"dem.integrator", m_world.integratorName()},
                 {"dt", fmt::format("{:.17g}", m_dt)},
-                {"particles", std::to_string(m_world.store().size())},
+                {"particles", std::to_string(m_initialParticles)},
                 {"wall segments", std::to_string(m_world.walls().segments.size())}};
     }
     void saveState(std::ostream& out) const override { m_world.saveState(out); }
@@ -292,6 +366,7 @@ private:
     dem::World m_world;
     Real m_dt;
     std::int64_t m_endStep;
+    std::size_t m_initialParticles;  ///< the scene's particles at t = 0 (sources and outlets change the count)
     std::int64_t m_loopStartStep = 0;
     std::uint64_t m_guardSkips = 0;  ///< contact evaluations skipped by the overlap guard
     dem::Energies m_lastEnergy;

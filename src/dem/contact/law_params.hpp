@@ -22,6 +22,7 @@ struct LawParamSpec {
     Real min = 0;
     Real max = kUnbounded;
     bool minExclusive = false;
+    bool maxExclusive = false;
     std::string defaultText;  ///< "required", a number, or how it is derived ("2/7 kn")
     std::string doc;
     bool isBool = false;

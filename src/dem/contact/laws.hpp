@@ -377,8 +377,11 @@ struct AreaFriction {
             lawParam("cap_total", "-", 0, 1, false, "false",
                      "cap with the total normal force (elastic + damping - cohesion), not the elastic one");
         total.isBool = true;
+        LawParamSpec mu = lawParam("mu", "-", 0, 1, false, "required",
+                                   "friction coefficient (gc2d default 0.6; the gc2d spec allows [0, 1))");
+        mu.maxExclusive = true;
         return {
-            lawParam("mu", "-", 0, kUnbounded, false, "required", "friction coefficient (gc2d default 0.6)"),
+            mu,
             lawParam("kt", "N/m", 0, kUnbounded, false, "2/7 E", "tangential spring stiffness"), damped, rab,
             total};
     }

@@ -16,7 +16,7 @@ namespace granulab::dem {
 std::string LawParamSpec::rangeText() const {
     if (isBool) return "true or false";
     const std::string lo = fmt::format("{}{}", minExclusive ? "(" : "[", min);
-    const std::string hi = max >= kUnbounded ? "inf)" : fmt::format("{}]", max);
+    const std::string hi = max >= kUnbounded ? "inf)" : fmt::format("{}{}", max, maxExclusive ? ")" : "]");
     return lo + ", " + hi;
 }
 
@@ -140,7 +140,8 @@ ContactLaw buildContactLaw(const model::ContactDef& def, const std::string& ctx,
         }
         const Real v = value.value;
         const bool below = spec->minExclusive ? !(v > spec->min) : !(v >= spec->min);
-        if (!std::isfinite(v) || below || v > spec->max)
+        const bool above = spec->maxExclusive ? !(v < spec->max) : v > spec->max;
+        if (!std::isfinite(v) || below || above)
             diags.error(value.loc, ctx + "." + key,
                         fmt::format("{} = {} is out of range; allowed {} [{}]", key, v, spec->rangeText(),
                                     spec->unit));
