@@ -35,6 +35,10 @@ Real areaEnergy(const model::ParticleStore& s, const model::WallSet& walls, cons
             g = area::wallGeometry(s, sc, walls, i, cl.second[p], cache);
             otherMat = seg.material;
             l = norm(g.point - Vec2{s.x[i], s.y[i]});
+            if (walls.walls[seg.wall].body) {  // r_j from the body's centroid, as in the force
+                const Real rj = norm(g.point - walls.bodyCentroid[seg.wall]);
+                l = l + rj > 0 ? l * rj / (l + rj) : 0;
+            }
         } else {
             const std::uint32_t j = cl.second[p];
             g = area::pairGeometry(s, sc, i, j, cache);

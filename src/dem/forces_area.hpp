@@ -72,8 +72,9 @@ inline void wallQuad(Vec2 a, Vec2 b, Vec2 from, Real thickness, WallQuad& q) noe
 /// wall: a convex body wall is one immovable polygon (gc2d spec 3.7, one contact per grain); a
 /// polyline segment acts as the plate of thickness 2 r behind it. Not touching for a wall that is
 /// not solid (an outlet's lid after it opened).
-inline geom::AreaContact wallGeometry(const model::ParticleStore& s, ShapeContext& sc, const model::WallSet& walls,
-                                      std::uint32_t i, std::uint32_t segIndex, geom::FeatureCache& cache) noexcept {
+inline geom::AreaContact wallGeometry(const model::ParticleStore& s, ShapeContext& sc,
+                                      const model::WallSet& walls, std::uint32_t i, std::uint32_t segIndex,
+                                      geom::FeatureCache& cache) noexcept {
     const auto& seg = walls.segments[segIndex];
     const model::Wall& wall = walls.walls[seg.wall];
     if (!wall.solid) return {};
@@ -99,13 +100,14 @@ inline geom::AreaContact wallGeometry(const model::ParticleStore& s, ShapeContex
 /// Everything the gc2d law needs about one contact; j may be a wall (infinite mass).
 struct AreaPair {
     geom::AreaContact g;
-    Vec2 ri, rj;  ///< [m] lever arms s - x_i, s - x_j (rj unused for walls)
+    Vec2 ri, rj;  ///< [m] lever arms s - x_i, s - x_j (rj: from a body wall's centroid; unused for polylines)
     Vec2 vi, vj;  ///< [m/s] contact-point velocities (vj: wall surface velocity)
     Vec2 di, dj;  ///< [m/s] contact-point drift velocities for the spring increment
     bool hasDrift = false;
     Real invMi = 0, invMj = 0;  ///< [1/kg] (0 for walls)
     Real invIi = 0, invIj = 0;  ///< [1/(kg m^2)]
     bool wall = false;
+    bool wallBody = false;  ///< a convex body wall: rj is the arm from the wall's centroid
 };
 
 struct AreaForce {
@@ -122,9 +124,9 @@ AreaForce areaLaw(const AreaNormal& nl, const D& dl, const T& tl, const AreaPair
     const Real ri = norm(c.ri);
     // 1/l with l = r_i r_j/(r_i + r_j) (Eq. 2.15); a wall's lever arm is infinite (spec 3.7): l = r_i.
     Real invL;
-    if (c.wall) {
+    if (c.wall && !c.wallBody) {  // a polyline plate: infinitely long, l = r_i
         invL = 1.0 / ri;
-    } else {
+    } else {  // grains, and a body wall with r_j = |s - x_wall| (spec 3.7, the faithful choice)
         const Real rj = norm(c.rj);
         invL = (ri + rj) / (ri * rj);
     }

@@ -145,6 +145,10 @@ void areaWalls(model::ParticleStore& s, const model::WallSet& walls, ContactList
         const Vec2 wallVel =
             walls.velocityAt(seg.wall, c.g.point) + t * dot(walls.walls[seg.wall].surfaceVelocity, t);
         c.ri = c.g.point - xi;
+        if (walls.walls[seg.wall].body) {
+            c.wallBody = true;
+            c.rj = c.g.point - walls.bodyCentroid[seg.wall];
+        }
         c.vi = pointVelocity(s.vx.data(), s.vy.data(), s.omega.data(), i, c.ri);
         c.vj = wallVel;
         if (drift.vx) {

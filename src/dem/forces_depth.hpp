@@ -156,7 +156,8 @@ void diskWalls(model::ParticleStore& s, const model::WallSet& walls, ContactList
         ++contacts;
         const Vec2 n = g.normal;
         // Wall point velocity at the contact, plus the belt's tangential surface velocity (gc2d 6.1).
-        const Vec2 wallVel = walls.velocityAt(seg.wall, g.point) + perp(n) * dot(wall.surfaceVelocity, perp(n));
+        const Vec2 wallVel =
+            walls.velocityAt(seg.wall, g.point) + perp(n) * dot(wall.surfaceVelocity, perp(n));
         // Contact point at -r n from the centre: v_c = v - w r perp(n).
         const Real w = s.omega[i] * r;
         const Vec2 vrel{s.vx[i] + w * n.y - wallVel.x, s.vy[i] - w * n.x - wallVel.y};

@@ -14,7 +14,7 @@ namespace granulab::dem {
 
 void StateColumns::permute(const std::vector<std::uint32_t>& order) {
     for (auto& col : columns) {
-        if (col.empty()) continue;  // no step in progress yet
+        if (col.empty()) continue;            // no step in progress yet
         std::vector<Real> out(order.size());  // a shorter order selects (particles removed)
         for (std::size_t k = 0; k < order.size(); ++k) out[k] = order[k] < col.size() ? col[order[k]] : 0.0;
         col.swap(out);

@@ -56,7 +56,7 @@ model::WallDriver driverOf(const model::WallDef& def, const std::vector<Vec2>& p
         d.direction = {std::cos(def.pistonDirection), std::sin(def.pistonDirection)};
         d.targetForce = *def.pistonForce;
         d.maxSpeed = def.pistonMaxSpeed;
-        d.gain = def.pistonGain > 0 ? def.pistonGain : def.pistonMaxSpeed / (0.1 * std::abs(*def.pistonForce));
+        d.gain = def.pistonGain > 0 ? def.pistonGain : def.pistonMaxSpeed / std::abs(*def.pistonForce);
         d.from = def.pistonFrom;
     }
     if (def.omega != 0) {
@@ -97,11 +97,7 @@ std::vector<Vec2> placedWallPoints(const model::WallDef& def) {
 }
 
 bool wallIsBody(const model::WallDef& def) {
-    if (def.kind == "polygon") return true;
-    if (def.kind != "auto" || !def.closed || def.points.size() < 3) return false;
-    std::vector<Vec2> p = def.points;
-    if (signedArea(p) < 0) std::reverse(p.begin(), p.end());
-    return geom::checkConvexPolygon(p).ok();
+    return def.kind == "polygon";
 }
 
 std::vector<Vec2> drumSegment(const model::DrumDef& d, std::int64_t k) {
@@ -226,14 +222,16 @@ InsertTemplate insertTemplate(const model::SceneDef& scene, const model::InsertD
             if (s.name == def.shape) {
                 t.shape = s;
                 if (s.kind != "grain")
-                    if (const auto corners = model::deterministicCorners(s)) t.sharedShape = pool.add(*corners);
+                    if (const auto corners = model::deterministicCorners(s))
+                        t.sharedShape = pool.add(*corners);
             }
     return t;
 }
 
 }  // namespace
 
-FlowConfig buildFlow(const model::SceneDef& scene, const std::vector<std::string>& names, model::ShapePool& pool) {
+FlowConfig buildFlow(const model::SceneDef& scene, const std::vector<std::string>& names,
+                     model::ShapePool& pool) {
     FlowConfig f;
     f.seed = scene.run.seed;
     const auto& m = scene.machines;
@@ -250,8 +248,8 @@ FlowConfig buildFlow(const model::SceneDef& scene, const std::vector<std::string
         d.to = s.to;
         f.sources.push_back(d);
     }
-    const auto addInlet = [&](const std::string& name, Vec2 a, Vec2 b, Real rate, Real from, Real to, bool inset,
-                              const model::InsertDef& what) {
+    const auto addInlet = [&](const std::string& name, Vec2 a, Vec2 b, Real rate, Real from, Real to,
+                              bool inset, const model::InsertDef& what) {
         Inlet in;
         in.name = name;
         in.what = insertTemplate(scene, what, names, pool);
@@ -267,8 +265,8 @@ FlowConfig buildFlow(const model::SceneDef& scene, const std::vector<std::string
     for (const auto& b : m.boundaries)
         for (const auto& e : b.edges)
             if (e.type == "inlet")
-                addInlet(b.name, b.points[static_cast<std::size_t>(e.from)], b.points[static_cast<std::size_t>(e.to)],
-                         b.rate, 0, 1e300, true, b.insert);
+                addInlet(b.name, b.points[static_cast<std::size_t>(e.from)],
+                         b.points[static_cast<std::size_t>(e.to)], b.rate, 0, 1e300, true, b.insert);
     const auto addOutlet = [&](const model::OutletDef& o) {
         Outlet q;
         q.name = o.name;
@@ -345,7 +343,8 @@ std::optional<GravitySchedule> buildGravitySchedule(const model::SceneDef& scene
 
 std::vector<WorldConfig::LawChange> buildLawChanges(const model::SceneDef& scene, Real dt) {
     std::vector<model::ChangeDef> changes = scene.machines.changes;
-    std::stable_sort(changes.begin(), changes.end(), [](const auto& a, const auto& b) { return a.at < b.at; });
+    std::stable_sort(changes.begin(), changes.end(),
+                     [](const auto& a, const auto& b) { return a.at < b.at; });
     model::SceneDef current = scene;
     std::vector<WorldConfig::LawChange> out;
     for (const auto& c : changes) {

@@ -18,8 +18,8 @@ namespace granulab::dem {
 
 /// The wall points of a [[wall]] after its OFFSET and ANGLE (rotation about their centroid).
 std::vector<Vec2> placedWallPoints(const model::WallDef& def);
-/// True if a [[wall]] becomes a convex polygon body (kind "polygon", or "auto" and closed and
-/// convex); its corners are then made counter-clockwise.
+/// True if a [[wall]] is a convex polygon body (kind "polygon"); its corners are then made
+/// counter-clockwise. A closed polyline stays a container of segments.
 bool wallIsBody(const model::WallDef& def);
 
 /// Every wall of the scene: [[wall]]s, then drums, boundary walls and outlet lids, in this order.

@@ -110,6 +110,64 @@ void fillList(ContactList& list, const std::vector<std::uint64_t>& keys, const s
 
 }  // namespace
 
+namespace {
+/// Keeps the entries k with keep[k] of every per-pair column of `l` (columns may be empty).
+void compactList(ContactList& l, const std::vector<char>& keep, const std::vector<std::uint32_t>& bucketOf) {
+    const std::size_t n = l.size();
+    const auto compact = [&](auto& col) {
+        if (col.size() != n) return;
+        std::size_t w = 0;
+        for (std::size_t k = 0; k < n; ++k)
+            if (keep[k]) col[w++] = col[k];
+        col.resize(w);
+    };
+    compact(l.first);
+    compact(l.second);
+    compact(l.xi);
+    compact(l.xiTrial);
+    compact(l.zeta);
+    compact(l.zetaTrial);
+    compact(l.areaOld);
+    compact(l.areaOldTrial);
+    compact(l.features);
+    if (l.bucketStart.empty()) return;
+    std::vector<std::uint32_t> start(l.bucketStart.size(), 0);
+    for (std::size_t k = 0; k < n; ++k)
+        if (keep[k]) ++start[bucketOf[k] + 1];
+    for (std::size_t b = 1; b < start.size(); ++b) start[b] += start[b - 1];
+    l.bucketStart = std::move(start);
+}
+}  // namespace
+
+void NeighborList::removeSlots(const std::vector<std::uint32_t>& oldToNew) {
+    for (auto* l : {&pairs, &wallPairs}) {
+        const bool both = l == &pairs;
+        const std::size_t n = l->size();
+        std::vector<char> keep(n, 0);
+        std::vector<std::uint32_t> bucketOf(n, 0);
+        for (std::uint32_t b = 0; b + 1 < l->bucketStart.size(); ++b)
+            for (std::uint32_t k = l->bucketStart[b]; k < l->bucketStart[b + 1]; ++k) bucketOf[k] = b;
+        for (std::size_t k = 0; k < n; ++k) {
+            const std::uint32_t a = oldToNew[l->first[k]];
+            const std::uint32_t b = both ? oldToNew[l->second[k]] : l->second[k];
+            keep[k] = a != kRemovedSlot && b != kRemovedSlot;
+            if (!keep[k]) continue;
+            l->first[k] = a;
+            l->second[k] = b;
+        }
+        compactList(*l, keep, bucketOf);
+    }
+    std::size_t w = 0;
+    for (std::size_t i = 0; i < oldToNew.size() && i < x0.size(); ++i)
+        if (oldToNew[i] != kRemovedSlot) {
+            x0[w] = x0[i];
+            y0[w] = y0[i];
+            ++w;
+        }
+    x0.resize(w);
+    y0.resize(w);
+}
+
 void NeighborList::rebuild(const model::ParticleStore& s, const model::WallSet& walls, Real skin, Real time,
                            BroadPhase& broad, const LawTable& laws,
                            const std::vector<std::uint32_t>& oldToNew, bool trialHistory) {

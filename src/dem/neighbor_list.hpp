@@ -73,6 +73,10 @@ public:
     std::size_t memoryBytes() const noexcept {
         return pairs.memoryBytes() + wallPairs.memoryBytes() + (x0.capacity() + y0.capacity()) * sizeof(Real);
     }
+    /// Particles were removed (ParticleStore::keep): drops their candidates and renumbers the
+    /// others through `oldToNew` (kRemovedSlot: removed). The renumbering keeps the slot order,
+    /// so buckets stay sorted and the history stays with its pairs; no broad phase is needed.
+    void removeSlots(const std::vector<std::uint32_t>& oldToNew);
 };
 
 }  // namespace granulab::dem

@@ -96,15 +96,24 @@ ParticleFlow::ParticleFlow(FlowConfig config) : m_config(std::move(config)) {
     m_counters.outletMass.assign(m_config.outlets.size(), 0);
 }
 
-std::vector<std::uint32_t> ParticleFlow::leaving(const model::ParticleStore& s, Real t) {
+std::vector<std::uint32_t> ParticleFlow::leaving(const model::ParticleStore& s, Real t, Real maxRadius) {
     std::vector<std::uint32_t> out;
+    const Real* __restrict x = s.x.data();
+    const Real* __restrict y = s.y.data();
     for (std::size_t o = 0; o < m_config.outlets.size(); ++o) {
         const Outlet& q = m_config.outlets[o];
         if (t < q.openAt) continue;
         const Vec2 d = q.b - q.a;
         const Vec2 nOut = perp(d) / norm(d);  // cfddem: n_out = z x d, left of a -> b
+        // The capture zone's bounding box: a cheap first test for every particle.
+        const Real bx0 = q.isRegion ? q.xmin : std::min(q.a.x, q.b.x) - maxRadius;
+        const Real bx1 = q.isRegion ? q.xmax : std::max(q.a.x, q.b.x) + maxRadius;
+        const Real by0 = q.isRegion ? q.ymin : std::min(q.a.y, q.b.y) - maxRadius;
+        const Real by1 = q.isRegion ? q.ymax : std::max(q.a.y, q.b.y) + maxRadius;
+        const bool everywhere = q.isRegion && !q.removeInside;
         for (std::uint32_t i = 0; i < s.size(); ++i) {
-            const Vec2 c{s.x[i], s.y[i]};
+            if (!everywhere && (x[i] < bx0 || x[i] > bx1 || y[i] < by0 || y[i] > by1)) continue;
+            const Vec2 c{x[i], y[i]};
             bool gone;
             if (q.isRegion) {
                 const bool inside = c.x >= q.xmin && c.x < q.xmax && c.y >= q.ymin && c.y < q.ymax;
@@ -130,7 +139,7 @@ std::vector<std::uint32_t> ParticleFlow::leaving(const model::ParticleStore& s, 
 }
 
 std::vector<NewParticle> ParticleFlow::entering(const model::ParticleStore& s, const model::WallSet& walls,
-                                                model::ShapePool& pool, Real t, Real dt) {
+                                                model::ShapePool& pool, Real t, Real dt, Vec2 gravity) {
     std::vector<NewParticle> fresh;
     const std::uint64_t seed = m_config.seed;
     // Drop sources: drop k is due at from + k interval, for from + k interval <= to.
@@ -142,7 +151,8 @@ std::vector<NewParticle> ParticleFlow::entering(const model::ParticleStore& s, c
             if (due > t || due > src.to) break;
             ++m_counters.sourceDrops[e];
             const Real span = src.to - src.from;
-            const Real width = span > 0 ? src.width + (src.widthEnd - src.width) * (due - src.from) / span : src.width;
+            const Real width =
+                span > 0 ? src.width + (src.widthEnd - src.width) * (due - src.from) / span : src.width;
             CounterRng rng = insertionRng(seed, 0, e, k);
             const auto drawn = drawParticle(src.what, rng, pool);
             bool placed = false;
@@ -151,10 +161,16 @@ std::vector<NewParticle> ParticleFlow::entering(const model::ParticleStore& s, c
                 const Real x = src.position.x + (rng.uniform() - 0.5) * width;
                 Real base = 0;
                 if (src.relative) {  // REL: ride on the pile top under the drop point (gc2d 6.5)
+                    // Grains still falling are not the pile: only those slower than a tenth of the
+                    // impact speed sqrt(2 g h) count (gc2d counts all, and a fast source then
+                    // climbs on its own falling grains).
+                    const Real impact2 = 2 * norm(gravity) * std::abs(src.position.y);
+                    const Real slow2 = impact2 > 0 ? 0.01 * impact2 : 1e300;
                     Real top = 0;
                     bool any = false;
                     for (std::size_t j = 0; j < s.size(); ++j)
-                        if (std::abs(s.x[j] - x) < p.radius + s.radius[j] && (!any || s.y[j] > top)) {
+                        if (std::abs(s.x[j] - x) < p.radius + s.radius[j] && (!any || s.y[j] > top) &&
+                            s.vx[j] * s.vx[j] + s.vy[j] * s.vy[j] < slow2) {
                             top = s.y[j];
                             any = true;
                         }
@@ -236,11 +252,13 @@ void ParticleFlow::load(std::istream& is) {
     c.skipped = readPod<std::uint64_t>(is);
     c.massIn = readPod<Real>(is);
     c.massOut = readPod<Real>(is);
-    if (c.sourceDrops.size() != m_config.sources.size() || c.sourceSkipped.size() != m_config.sources.size() ||
+    if (c.sourceDrops.size() != m_config.sources.size() ||
+        c.sourceSkipped.size() != m_config.sources.size() ||
         c.inletEmitted.size() != m_config.inlets.size() || c.inletSkipped.size() != m_config.inlets.size() ||
         c.outletRemoved.size() != m_config.outlets.size() || c.outletMass.size() != m_config.outlets.size())
         throw std::runtime_error(
-            "the checkpoint's sources, inlets and outlets differ from the scene's (add or remove them only in a "
+            "the checkpoint's sources, inlets and outlets differ from the scene's (add or remove them only "
+            "in a "
             "fresh run)");
     m_counters = std::move(c);
 }

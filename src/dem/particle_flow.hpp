@@ -13,10 +13,10 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "model/dem_def.hpp"
 #include "model/mass_model.hpp"
 #include "model/particle_store.hpp"
 #include "model/shape_pool.hpp"
-#include "model/dem_def.hpp"
 #include "model/walls.hpp"
 
 namespace granulab::dem {
@@ -39,14 +39,14 @@ struct DropSource {  // gc2d DROPSOURCE
     InsertTemplate what;
     Vec2 position;  ///< [m]
     bool relative = false;
-    Real width = 0, widthEnd = 0;  ///< [m]
+    Real width = 0, widthEnd = 0;           ///< [m]
     Real interval = 0.1, from = 0, to = 1;  ///< [s]
 };
 
 struct Inlet {  // cfddem inlet edge
     std::string name;
     InsertTemplate what;
-    Vec2 a, b;  ///< [m] n_out = left of a -> b
+    Vec2 a, b;      ///< [m] n_out = left of a -> b
     Real rate = 0;  ///< [1/s]
     Real from = 0, to = 1e300;
     bool inset = true;
@@ -79,9 +79,9 @@ struct NewParticle {
 
 /// Counters of the flow (all since t = 0; saved in checkpoints).
 struct FlowCounters {
-    std::vector<std::uint64_t> sourceDrops;     ///< drops due so far per source (inserted + skipped)
+    std::vector<std::uint64_t> sourceDrops;  ///< drops due so far per source (inserted + skipped)
     std::vector<std::uint64_t> sourceSkipped;
-    std::vector<std::uint64_t> inletEmitted;    ///< emissions per inlet (inserted + skipped)
+    std::vector<std::uint64_t> inletEmitted;  ///< emissions per inlet (inserted + skipped)
     std::vector<std::uint64_t> inletSkipped;
     std::vector<std::uint64_t> outletRemoved;
     std::vector<Real> outletMass;  ///< [kg]
@@ -99,12 +99,13 @@ public:
     const FlowCounters& counters() const noexcept { return m_counters; }
 
     /// Slots (ascending) of the particles that left through an open outlet at time t [s]; their
-    /// count and mass are booked per outlet.
-    std::vector<std::uint32_t> leaving(const model::ParticleStore& s, Real t);
+    /// count and mass are booked per outlet. `maxRadius` [m] bounds every particle's radius.
+    std::vector<std::uint32_t> leaving(const model::ParticleStore& s, Real t, Real maxRadius);
     /// Particles entering at time t, the end of a step of length dt [s], placed overlap-free
-    /// against the store and the solid walls (retry, then skip and count).
+    /// against the store and the solid walls (retry, then skip and count); `gravity` [m/s^2]
+    /// tells REL sources which grains are still falling.
     std::vector<NewParticle> entering(const model::ParticleStore& s, const model::WallSet& walls,
-                                      model::ShapePool& pool, Real t, Real dt);
+                                      model::ShapePool& pool, Real t, Real dt, Vec2 gravity);
     /// Books particles that `entering` returned and the world inserted.
     void bookInserted(const std::vector<NewParticle>& added) noexcept;
 

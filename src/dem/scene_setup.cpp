@@ -229,11 +229,41 @@ PreparedScene prepareScene(const model::SceneDef& scene, Diagnostics& diags) {
         yhi = std::max(yhi, p.position.y);
         usedByParticles[p.material] = true;
     }
-    for (const auto& w : scene.walls)
-        usedByWalls[static_cast<std::size_t>(std::find(names.begin(), names.end(), w.material) -
-                                             names.begin())] = true;
-    if (out.initial.particles.empty())
-        diags.error({scene.path, 0, 0}, "", "the scene has no particles ([[particle]] or [[block]])");
+    const auto materialOf = [&](const std::string& name) {
+        return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
+    };
+    const auto& machines = scene.machines;
+    for (const auto& w : scene.walls) usedByWalls[materialOf(w.material)] = true;
+    for (const auto& d : machines.drums) usedByWalls[materialOf(d.material)] = true;
+    for (const auto& b : machines.boundaries)
+        if (!b.material.empty() && materialOf(b.material) < nm) usedByWalls[materialOf(b.material)] = true;
+    for (const auto& o : machines.outlets)
+        if (o.openAt > 0 && !o.material.empty() && materialOf(o.material) < nm)
+            usedByWalls[materialOf(o.material)] = true;
+    // Particles that sources and inlets insert take part in the law coverage and time-step advice.
+    std::vector<const model::InsertDef*> inserts;
+    for (const auto& src : machines.sources) inserts.push_back(&src.insert);
+    for (const auto& in : machines.inlets) inserts.push_back(&in.insert);
+    for (const auto& b : machines.boundaries)
+        if (std::any_of(b.edges.begin(), b.edges.end(), [](const auto& e) { return e.type == "inlet"; }))
+            inserts.push_back(&b.insert);
+    for (const model::InsertDef* in : inserts) {
+        const std::size_t m = materialOf(in->material);
+        if (m >= nm) continue;  // reported by validation
+        usedByParticles[m] = true;
+        speed = std::max(speed, norm(in->velocity));
+        if (in->shape != "disk") continue;
+        const Real r =
+            in->radius.kind == model::SizeDistDef::Kind::Constant ? in->radius.value : in->radius.min;
+        if (!(r > 0)) continue;
+        const Real mass = model::particleMass(massModel, scene.materials[m].density, r);
+        minMass[m] = minMass[m] > 0 ? std::min(minMass[m], mass) : mass;
+        minRadius[m] = minRadius[m] > 0 ? std::min(minRadius[m], r) : r;
+    }
+    if (out.initial.particles.empty() && inserts.empty())
+        diags.error({scene.path, 0, 0}, "",
+                    "the scene has no particles ([[particle]], [[block]], or a [[source]] or [[inlet]] that "
+                    "inserts them)");
     for (std::size_t m = 0; m < nm; ++m) {
         if (usedByParticles[m] && !(scene.materials[m].density > 0))
             diags.error(scene.materials[m].loc, fmt::format("material[{}].density", m),

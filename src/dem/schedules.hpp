@@ -13,12 +13,12 @@ namespace granulab::dem {
 struct GravitySchedule {
     enum class Type { Constant, Linear, Step, SmoothStep };
     Type type = Type::Constant;
-    Real g1 = 0, g2 = 0;  ///< [m/s^2] magnitudes
-    Real t1 = 0, t2 = 1;  ///< [s]
-    Real steps = 5;       ///< p1 (number of steps)
-    Real ramp = 0.5;      ///< p2: fraction of each step period spent ramping
+    Real g1 = 0, g2 = 0;                                ///< [m/s^2] magnitudes
+    Real t1 = 0, t2 = 1;                                ///< [s]
+    Real steps = 5;                                     ///< p1 (number of steps)
+    Real ramp = 0.5;                                    ///< p2: fraction of each step period spent ramping
     Real direction1 = -kPi / 2, direction2 = -kPi / 2;  ///< [rad]
-    Real tilt1 = 0, tilt2 = 0;                         ///< [s] tilt window
+    Real tilt1 = 0, tilt2 = 0;                          ///< [s] tilt window
 };
 
 /// Gravity magnitude [m/s^2] at time t (gc2d 6.6; tau = (t - t1)/(t2 - t1) clamped to [0, 1],

@@ -197,6 +197,10 @@ bool hasPolygons(const model::SceneDef& scene) noexcept {
         if (p.shape != "disk") return true;
     for (const auto& b : scene.blocks)
         if (b.shape != "disk") return true;
+    for (const auto& s : scene.machines.sources)
+        if (s.insert.shape != "disk") return true;
+    for (const auto& i : scene.machines.inlets)
+        if (i.insert.shape != "disk") return true;
     return false;
 }
 

@@ -47,6 +47,7 @@ World::World(WorldConfig config, model::ParticleStore store, model::WallSet wall
     m_minRadius = m_store.size() ? *std::min_element(m_store.radius.begin(), m_store.radius.end()) : 1e300;
     m_shapes.anyPolygon = m_pool.size() > 0;
     for (const ParticleId id : m_store.id) m_nextId = std::max<ParticleId>(m_nextId, id + 1);
+    for (const Real r : m_store.radius) m_maxRadius = std::max(m_maxRadius, r);
 }
 
 Real World::totalMass() const noexcept {
@@ -67,8 +68,9 @@ void World::applyLawChanges() {
 
 void World::exchangeParticles() {
     const Real t = time();
-    const std::vector<std::uint32_t> leaving = m_flow.leaving(m_store, t);
-    std::vector<NewParticle> entering = m_flow.entering(m_store, m_walls, m_pool, t, m_config.dt);
+    const std::vector<std::uint32_t> leaving = m_flow.leaving(m_store, t, m_maxRadius);
+    std::vector<NewParticle> entering =
+        m_flow.entering(m_store, m_walls, m_pool, t, m_config.dt, gravityAt(t));
     if (leaving.empty() && entering.empty()) return;
     std::vector<std::uint32_t> oldToNew;
     if (!leaving.empty()) {
@@ -96,8 +98,8 @@ void World::exchangeParticles() {
     }
     const Vec2 g = gravityAt(t);
     for (const NewParticle& p : entering) {
-        const std::size_t k = m_store.add(m_nextId++, p.position, p.velocity, p.angle, p.omega, p.radius, p.mass,
-                                          p.inertia, p.material, p.shape);
+        const std::size_t k = m_store.add(m_nextId++, p.position, p.velocity, p.angle, p.omega, p.radius,
+                                          p.mass, p.inertia, p.material, p.shape);
         // Until the next force evaluation the new particle feels its weight (it touches nothing).
         m_store.fx[k] = p.mass * g.x;
         m_store.fy[k] = p.mass * g.y;
@@ -105,7 +107,12 @@ void World::exchangeParticles() {
     }
     m_flow.bookInserted(entering);
     m_minRadius = m_store.size() ? *std::min_element(m_store.radius.begin(), m_store.radius.end()) : 1e300;
-    rebuildNeighbors(std::move(oldToNew));
+    for (const NewParticle& p : entering) m_maxRadius = std::max(m_maxRadius, p.radius);
+    if (entering.empty()) {
+        m_list.removeSlots(oldToNew);  // removal only: renumber the lists, no broad phase
+    } else {
+        rebuildNeighbors(std::move(oldToNew));  // new particles need their candidates
+    }
 }
 
 void World::evaluateForces(const BodyForces& body, const DriftVelocities& drift, bool trial) {
@@ -280,7 +287,8 @@ void World::loadState(std::istream& is) {
     m_store.load(is);
     const auto& s = m_store;
     // With sources and outlets the count changes during a run; otherwise it is the scene's.
-    if (s.size() != particles && !m_flow.active()) throw std::runtime_error("checkpoint corrupt (particle count)");
+    if (s.size() != particles && !m_flow.active())
+        throw std::runtime_error("checkpoint corrupt (particle count)");
     for (const auto* col : {&s.x, &s.y, &s.vx, &s.vy, &s.angle, &s.omega, &s.radius, &s.mass, &s.invMass})
         if (!std::all_of(col->begin(), col->end(), [](Real v) { return std::isfinite(v); }))
             throw std::runtime_error(
@@ -330,9 +338,11 @@ void World::loadState(std::istream& is) {
                   springs.end());
     m_laws = m_baseLaws;  // the laws in force at the restored step
     m_lawChangesDone = 0;
-    while (m_lawChangesDone < m_config.lawChanges.size() && m_config.lawChanges[m_lawChangesDone].step <= m_step)
+    while (m_lawChangesDone < m_config.lawChanges.size() &&
+           m_config.lawChanges[m_lawChangesDone].step <= m_step)
         m_laws = m_config.lawChanges[m_lawChangesDone++].laws;
     m_minRadius = s.size() ? *std::min_element(s.radius.begin(), s.radius.end()) : 1e300;
+    for (const Real r : s.radius) m_maxRadius = std::max(m_maxRadius, r);
     // Wall forces of the restored step are re-derived at the next step; stats start empty.
     m_stats = ForceStats{};
 }

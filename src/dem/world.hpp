@@ -45,7 +45,7 @@ struct WorldConfig {
     Real overlapGuard = 0;       ///< see BodyForces::overlapGuard
     IntegratorParams integrator;
     std::string broadPhase = "cell_grid";
-    std::vector<PullSpring> springs;  ///< slots refer to the store given to the World
+    std::vector<PullSpring> springs;                 ///< slots refer to the store given to the World
     std::optional<GravitySchedule> gravitySchedule;  ///< replaces `gravity` when set (gc2d 6.6)
     FlowConfig flow;                                 ///< sources, inlets, outlets (step 8)
     /// Contact laws replaced at a step (gc2d 6.7: friction or cohesion switched off at t).
@@ -147,10 +147,11 @@ private:
     std::int64_t m_step = 0;
     std::uint64_t m_forceEvaluations = 0;
     Real m_minRadius = 0;
+    Real m_maxRadius = 0;  ///< [m] largest radius since t = 0 (outlet capture zones)
     ParticleFlow m_flow;
-    ParticleId m_nextId = 0;         ///< id of the next inserted particle
+    ParticleId m_nextId = 0;           ///< id of the next inserted particle
     std::size_t m_lawChangesDone = 0;  ///< entries of m_config.lawChanges applied
-    LawTable m_baseLaws;             ///< the laws of t = 0
+    LawTable m_baseLaws;               ///< the laws of t = 0
 };
 
 }  // namespace granulab::dem

@@ -102,7 +102,8 @@ void readOutlet(TableReader& r, model::OutletDef& o) {
     if (hasEdge && o.isRegion)
         r.diags().error(o.loc, r.keyPath("region"), "an outlet has either `edge` or `region`, not both");
     if (!r.table().get("edge") && !r.table().get("region"))
-        r.diags().error(o.loc, r.keyPath("edge"), "missing: `edge = [[x1, y1], [x2, y2]]` or `region = [xmin, ymin, xmax, ymax]`");
+        r.diags().error(o.loc, r.keyPath("edge"),
+                        "missing: `edge = [[x1, y1], [x2, y2]]` or `region = [xmin, ymin, xmax, ymax]`");
     std::string remove = "inside";
     r.choice("remove", remove, {"inside", "outside"});
     o.removeInside = remove == "inside";
@@ -127,7 +128,9 @@ void readBoundary(TableReader& r, model::BoundaryDef& b) {
             edge.type = (*e)[2].value<std::string>().value_or("");
             b.edges.push_back(edge);
         }
-        if (!ok) r.typeError("edges", *n, "an array of [from, to, \"wall\" | \"outlet\" | \"inlet\"] (point indices from 0)");
+        if (!ok)
+            r.typeError("edges", *n,
+                        "an array of [from, to, \"wall\" | \"outlet\" | \"inlet\"] (point indices from 0)");
     } else {
         required(r, "edges", "[[from, to, \"wall\"], ...]: point indices from 0 and the edge type");
     }
@@ -146,27 +149,29 @@ void readBoundary(TableReader& r, model::BoundaryDef& b) {
     }
 }
 
+/// `key = x` (both values x) or `key = [x1, x2]`.
+void numberOrPair(TableReader& r, const std::string& key, Real& first, Real& second) {
+    const toml::node* n = r.table().get(key);
+    if (n && n->is_array()) {
+        std::vector<Real> v;
+        if (r.numbers(key, v, 2)) {
+            first = v[0];
+            second = v[1];
+        }
+    } else if (r.number(key, first)) {
+        second = first;
+    }
+}
+
 void readGravity(TableReader& r, model::GravityDef& g) {
     g.present = true;
     g.loc = r.loc();
     r.choice("type", g.type, {"constant", "linear", "step", "smooth_step"});
-    std::vector<Real> m;
-    if (r.numbers("magnitude", m, 2)) {
-        g.g1 = m[0];
-        g.g2 = m[1];
-    } else if (r.number("magnitude", g.g1)) {
-        g.g2 = g.g1;
-    }
+    numberOrPair(r, "magnitude", g.g1, g.g2);
     window(r, "window", g.t1, g.t2);
     r.number("steps", g.steps);
     r.number("ramp", g.ramp);
-    std::vector<Real> d;
-    if (r.numbers("direction", d, 2)) {
-        g.direction1 = d[0];
-        g.direction2 = d[1];
-    } else if (r.number("direction", g.direction1)) {
-        g.direction2 = g.direction1;
-    }
+    numberOrPair(r, "direction", g.direction1, g.direction2);
     g.tilt1 = g.t1;
     g.tilt2 = g.t2;
     window(r, "tilt_window", g.tilt1, g.tilt2);
@@ -181,8 +186,10 @@ void readChange(TableReader& r, model::ChangeDef& c) {
     const toml::node* n = r.node("set");
     const toml::table* t = n ? n->as_table() : nullptr;
     if (!t) {
-        if (n) r.typeError("set", *n, "a table of law parameters, e.g. { mu = 0.0 }");
-        else required(r, "set", "the law parameters to change, e.g. set = { mu = 0.0 }");
+        if (n)
+            r.typeError("set", *n, "a table of law parameters, e.g. { mu = 0.0 }");
+        else
+            required(r, "set", "the law parameters to change, e.g. set = { mu = 0.0 }");
         return;
     }
     TableReader s(*t, r.keyPath("set"), r.file(), r.diags());

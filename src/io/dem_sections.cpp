@@ -272,7 +272,7 @@ void readWall(TableReader& r, model::WallDef& w) {
     if (!r.points("points", w.points) && !r.table().get("points"))
         r.diags().error(w.loc, r.keyPath("points"), "missing: [[x0, y0], [x1, y1], ...] in m");
     r.boolean("closed", w.closed);
-    r.choice("kind", w.kind, {"auto", "polyline", "polygon"});
+    r.choice("kind", w.kind, {"polyline", "polygon"});
     r.vec2("offset", w.offset);
     r.number("angle", w.angle);
     r.string("material", w.material);
@@ -366,9 +366,8 @@ void readDemSections(TableReader& root, model::SceneDef& scene) {
 SceneSections demSceneSections() {
     SceneSections s;
     s.engine = "dem";
-    s.sections = {"dem",      "material", "contact", "shape",  "particle", "block",   "wall",
-                  "spring",   "drum",     "source",  "inlet",  "outlet",   "boundary", "gravity",
-                  "change"};
+    s.sections = {"dem",  "material", "contact", "shape",  "particle", "block",   "wall",  "spring",
+                  "drum", "source",   "inlet",   "outlet", "boundary", "gravity", "change"};
     s.required = "dem";
     s.requiredHint = "needs at least dt";
     s.needsEndTime = true;

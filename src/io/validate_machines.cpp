@@ -73,7 +73,8 @@ void checkWallMotion(Check& c, const model::WallDef& w, const std::string& key) 
         c.window(w.loc, key + ".vib_window", w.vibFrom, w.vibTo);
     } else if (w.vibWidth != 0 || w.vibFrequency != 0) {
         c.d.error(w.loc, key + ".vib_type",
-                  "vib_width / vib_frequency need vib_type = \"cosine\" | \"sawtooth\" | \"tapping\" | \"triangle\"");
+                  "vib_width / vib_frequency need vib_type = \"cosine\" | \"sawtooth\" | \"tapping\" | "
+                  "\"triangle\"");
     }
     if (piston) {
         if (!std::isfinite(*w.pistonForce) || *w.pistonForce == 0)
@@ -93,10 +94,11 @@ void checkWallMotion(Check& c, const model::WallDef& w, const std::string& key) 
         if (p.size() >= 3 && signedArea(p) < 0) std::reverse(p.begin(), p.end());
         const auto problem = geom::checkConvexPolygon(p);
         if (!problem.ok())
-            c.d.error(w.loc, key + ".points",
-                      fmt::format("a polygon wall must be a convex polygon (either orientation); its corners are "
-                                  "{} (corner {}); use kind = \"polyline\" with closed = true for other shapes",
-                                  problem.what, problem.corner));
+            c.d.error(
+                w.loc, key + ".points",
+                fmt::format("a polygon wall must be a convex polygon (either orientation); its corners are "
+                            "{} (corner {}); use kind = \"polyline\" with closed = true for other shapes",
+                            problem.what, problem.corner));
     }
 }
 
@@ -110,10 +112,13 @@ void checkInsert(Check& c, const model::SceneDef& sc, const model::InsertDef& in
     if (in.shape == "disk") {
         const auto& r = in.radius;
         using K = model::SizeDistDef::Kind;
-        if (r.kind == K::Constant) c.positive(loc, key + ".radius", r.value, "m");
+        if (r.kind == K::Constant)
+            c.positive(loc, key + ".radius", r.value, "m");
         else {
             c.positive(loc, key + ".radius.min", r.min, "m");
-            if (!(r.max >= r.min)) c.d.error(loc, key + ".radius.max", fmt::format("max ({}) must be >= min ({})", r.max, r.min));
+            if (!(r.max >= r.min))
+                c.d.error(loc, key + ".radius.max",
+                          fmt::format("max ({}) must be >= min ({})", r.max, r.min));
         }
     } else {
         std::vector<std::string> shapes = {"disk"};
@@ -123,7 +128,8 @@ void checkInsert(Check& c, const model::SceneDef& sc, const model::InsertDef& in
                       fmt::format("unknown shape '{}'{}; defined: {}", in.shape, didYouMean(in.shape, shapes),
                                   joinList(shapes)));
         if (in.radius.value != 0 || in.radius.max != 0)
-            c.d.error(loc, key + ".radius", "a polygon shape takes its size from its [[shape]]; remove `radius`");
+            c.d.error(loc, key + ".radius",
+                      "a polygon shape takes its size from its [[shape]]; remove `radius`");
     }
     c.finite(loc, key + ".velocity", {in.velocity.x, in.velocity.y, in.angle, in.omega});
     if (in.attempts < 1 || in.attempts > 100000)
@@ -141,8 +147,9 @@ Real insertRadius(const model::SceneDef& sc, const model::InsertDef& in) {
 void checkEdge(Check& c, const SourceLoc& loc, const std::string& key, Vec2 a, Vec2 b) {
     c.finite(loc, key, {a.x, a.y, b.x, b.y});
     if (!(norm2(b - a) > 0))
-        c.d.error(loc, key, fmt::format("the edge [[{}, {}], [{}, {}]] has zero length; allowed: two distinct points",
-                                        a.x, a.y, b.x, b.y));
+        c.d.error(loc, key,
+                  fmt::format("the edge [[{}, {}], [{}, {}]] has zero length; allowed: two distinct points",
+                              a.x, a.y, b.x, b.y));
 }
 
 void checkInletRate(Check& c, const model::SceneDef& sc, const SourceLoc& loc, const std::string& key, Vec2 a,
@@ -150,30 +157,36 @@ void checkInletRate(Check& c, const model::SceneDef& sc, const SourceLoc& loc, c
     c.positive(loc, key + ".rate", rate, "1/s");
     if (rate > 0 && sc.dem.dt > 0 && rate * sc.dem.dt > 1)
         c.d.error(loc, key + ".rate",
-                  fmt::format("rate {} /s emits more than one particle per step (dt = {} s); allowed (0, 1/dt] = (0, {:.6g}]",
+                  fmt::format("rate {} /s emits more than one particle per step (dt = {} s); allowed (0, "
+                              "1/dt] = (0, {:.6g}]",
                               rate, sc.dem.dt, 1 / sc.dem.dt));
     const Vec2 d = b - a;
     if (!(norm2(d) > 0)) return;
     const Vec2 nOut = perp(d) / norm(d);
     // cfddem 4.2 pre-run checks: (a) into the domain, (b) fast enough not to hit the previous particle.
     if (!(dot(in.velocity, nOut) < 0))
-        c.d.error(loc, key + ".velocity",
-                  fmt::format("the inlet velocity ({}, {}) m/s must point into the domain, which lies to the right of "
-                              "the edge from its first to its second point (v . n_out < 0 with n_out = ({:.3g}, {:.3g}))",
-                              in.velocity.x, in.velocity.y, nOut.x, nOut.y));
+        c.d.error(
+            loc, key + ".velocity",
+            fmt::format(
+                "the inlet velocity ({}, {}) m/s must point into the domain, which lies to the right of "
+                "the edge from its first to its second point (v . n_out < 0 with n_out = ({:.3g}, {:.3g}))",
+                in.velocity.x, in.velocity.y, nOut.x, nOut.y));
     const Real r = insertRadius(sc, in);
     if (rate > 0 && r > 0 && norm(in.velocity) < 2 * r * rate)
-        c.d.error(loc, key + ".velocity",
-                  fmt::format("inlet speed {:.4g} m/s is below 2 R pps = {:.4g} m/s: a new particle would hit the previous "
-                              "one (cfddem 4.2 check b); raise the speed or lower the rate",
-                              norm(in.velocity), 2 * r * rate));
+        c.d.error(
+            loc, key + ".velocity",
+            fmt::format(
+                "inlet speed {:.4g} m/s is below 2 R pps = {:.4g} m/s: a new particle would hit the previous "
+                "one (cfddem 4.2 check b); raise the speed or lower the rate",
+                norm(in.velocity), 2 * r * rate));
 }
 
 }  // namespace
 
 void checkMachineDefs(const model::SceneDef& sc, Diagnostics& d, const std::vector<std::string>& names) {
     Check c{d};
-    for (std::size_t k = 0; k < sc.walls.size(); ++k) checkWallMotion(c, sc.walls[k], fmt::format("wall[{}]", k));
+    for (std::size_t k = 0; k < sc.walls.size(); ++k)
+        checkWallMotion(c, sc.walls[k], fmt::format("wall[{}]", k));
     const auto& m = sc.machines;
     for (std::size_t k = 0; k < m.drums.size(); ++k) {
         const auto& dr = m.drums[k];
@@ -195,7 +208,8 @@ void checkMachineDefs(const model::SceneDef& sc, Diagnostics& d, const std::vect
         c.window(s.loc, key + ".from", s.from, s.to);
         if (s.interval > 0 && s.to > s.from && (s.to - s.from) / s.interval > 1e9)
             d.error(s.loc, key + ".interval",
-                    fmt::format("the window holds {:.3g} drops; allowed at most 1e9", (s.to - s.from) / s.interval));
+                    fmt::format("the window holds {:.3g} drops; allowed at most 1e9",
+                                (s.to - s.from) / s.interval));
         checkInsert(c, sc, s.insert, s.loc, key, names);
         // A source must sit inside the walls: its drop point lies in the bounding box of some wall.
         if (!sc.walls.empty() || !m.drums.empty() || !m.boundaries.empty()) {
@@ -222,12 +236,15 @@ void checkMachineDefs(const model::SceneDef& sc, Diagnostics& d, const std::vect
                     ymax = std::max(ymax, p.y);
                 }
             const Real half = 0.5 * std::max(s.width, s.widthEnd.value_or(s.width));
-            if (s.placement == "abs" && (s.position.x + half < xmin || s.position.x - half > xmax ||
-                                         s.position.y < ymin - (ymax - ymin) || s.position.y > ymax + (ymax - ymin)))
-                d.error(s.loc, key + ".position",
-                        fmt::format("the source at ({}, {}) m lies outside every wall (walls span x in [{:.4g}, {:.4g}], "
-                                    "y in [{:.4g}, {:.4g}] m)",
-                                    s.position.x, s.position.y, xmin, xmax, ymin, ymax));
+            if (s.placement == "abs" &&
+                (s.position.x + half < xmin || s.position.x - half > xmax ||
+                 s.position.y < ymin - (ymax - ymin) || s.position.y > ymax + (ymax - ymin)))
+                d.error(
+                    s.loc, key + ".position",
+                    fmt::format(
+                        "the source at ({}, {}) m lies outside every wall (walls span x in [{:.4g}, {:.4g}], "
+                        "y in [{:.4g}, {:.4g}] m)",
+                        s.position.x, s.position.y, xmin, xmax, ymin, ymax));
         }
     }
     for (std::size_t k = 0; k < m.inlets.size(); ++k) {
@@ -244,8 +261,8 @@ void checkMachineDefs(const model::SceneDef& sc, Diagnostics& d, const std::vect
         if (o.isRegion) {
             if (!(o.xmax > o.xmin) || !(o.ymax > o.ymin))
                 d.error(o.loc, key + ".region",
-                        fmt::format("region [{}, {}, {}, {}] must have xmax > xmin and ymax > ymin", o.xmin, o.ymin,
-                                    o.xmax, o.ymax));
+                        fmt::format("region [{}, {}, {}, {}] must have xmax > xmin and ymax > ymin", o.xmin,
+                                    o.ymin, o.xmax, o.ymax));
         } else {
             checkEdge(c, o.loc, key + ".edge", o.a, o.b);
         }
@@ -261,21 +278,24 @@ void checkMachineDefs(const model::SceneDef& sc, Diagnostics& d, const std::vect
             const auto n = static_cast<std::int64_t>(b.points.size());
             if (ed.from < 0 || ed.from >= n || ed.to < 0 || ed.to >= n) {
                 d.error(b.loc, fmt::format("{}.edges[{}]", key, e),
-                        fmt::format("point index out of range: [{}, {}]; allowed [0, {}]", ed.from, ed.to, n - 1));
+                        fmt::format("point index out of range: [{}, {}]; allowed [0, {}]", ed.from, ed.to,
+                                    n - 1));
                 indicesOk = false;
                 continue;
             }
             if (ed.type != "wall" && ed.type != "outlet" && ed.type != "inlet")
                 d.error(b.loc, fmt::format("{}.edges[{}]", key, e),
-                        fmt::format("unknown edge type '{}'; allowed: \"wall\" (1), \"outlet\" (2), \"inlet\" (3)",
-                                    ed.type));
-            checkEdge(c, b.loc, fmt::format("{}.edges[{}]", key, e), b.points[static_cast<std::size_t>(ed.from)],
-                      b.points[static_cast<std::size_t>(ed.to)]);
+                        fmt::format(
+                            "unknown edge type '{}'; allowed: \"wall\" (1), \"outlet\" (2), \"inlet\" (3)",
+                            ed.type));
+            checkEdge(c, b.loc, fmt::format("{}.edges[{}]", key, e),
+                      b.points[static_cast<std::size_t>(ed.from)], b.points[static_cast<std::size_t>(ed.to)]);
         }
         const auto has = [&](const char* t) {
             return std::any_of(b.edges.begin(), b.edges.end(), [&](const auto& e) { return e.type == t; });
         };
-        if (has("wall") || (has("outlet") && b.openAt > 0)) c.material(b.loc, key + ".material", b.material, names);
+        if (has("wall") || (has("outlet") && b.openAt > 0))
+            c.material(b.loc, key + ".material", b.material, names);
         c.nonNegative(b.loc, key + ".open_at", b.openAt, "s");
         if (has("inlet") && indicesOk) {
             checkInsert(c, sc, b.insert, b.loc, key + ".inlet", names);
@@ -294,26 +314,31 @@ void checkMachineDefs(const model::SceneDef& sc, Diagnostics& d, const std::vect
             for (const auto& e : b.edges) ring.push_back(b.points[static_cast<std::size_t>(e.from)]);
             const Real area = signedArea(ring);
             if (!b.obstacle && area > 0)
-                d.error(b.loc, key + ".edges",
-                        "an outer boundary must run clockwise (cfddem 4.1), so that each edge's outward normal "
-                        "z x d points out of the domain; reverse the edge order or set obstacle = true");
+                d.error(
+                    b.loc, key + ".edges",
+                    "an outer boundary must run clockwise (cfddem 4.1), so that each edge's outward normal "
+                    "z x d points out of the domain; reverse the edge order or set obstacle = true");
             if (b.obstacle && area < 0)
-                d.error(b.loc, key + ".edges",
-                        "an obstacle boundary must run counter-clockwise (cfddem 4.1); reverse the edge order");
+                d.error(
+                    b.loc, key + ".edges",
+                    "an obstacle boundary must run counter-clockwise (cfddem 4.1); reverse the edge order");
         }
     }
     if (m.gravity.present) {
         const auto& g = m.gravity;
         if (sc.dem.gravity.x != 0 || sc.dem.gravity.y != 0)
-            d.error(g.loc, "gravity", "give gravity either as dem.gravity (constant vector) or as [gravity], not both");
+            d.error(g.loc, "gravity",
+                    "give gravity either as dem.gravity (constant vector) or as [gravity], not both");
         c.finite(g.loc, "gravity.magnitude", {g.g1, g.g2});
         c.window(g.loc, "gravity.window", g.t1, g.t2);
         c.window(g.loc, "gravity.tilt_window", g.tilt1, g.tilt2);
         c.finite(g.loc, "gravity.direction", {g.direction1, g.direction2});
         if (!(g.steps >= 1 && g.steps <= 1e6 && g.steps == std::floor(g.steps)))
-            d.error(g.loc, "gravity.steps", fmt::format("must be a whole number in [1, 1e6], got {}", g.steps));
+            d.error(g.loc, "gravity.steps",
+                    fmt::format("must be a whole number in [1, 1e6], got {}", g.steps));
         if (!(g.ramp >= 0 && g.ramp <= 1))
-            d.error(g.loc, "gravity.ramp", fmt::format("must be in [0, 1] (0: step, 1: linear), got {}", g.ramp));
+            d.error(g.loc, "gravity.ramp",
+                    fmt::format("must be in [0, 1] (0: step, 1: linear), got {}", g.ramp));
     }
     for (std::size_t k = 0; k < m.changes.size(); ++k) {
         const auto& ch = m.changes[k];

@@ -10,6 +10,7 @@
 
 namespace granulab::io {
 
-void checkMachineDefs(const model::SceneDef& scene, Diagnostics& diags, const std::vector<std::string>& materialNames);
+void checkMachineDefs(const model::SceneDef& scene, Diagnostics& diags,
+                      const std::vector<std::string>& materialNames);
 
 }  // namespace granulab::io

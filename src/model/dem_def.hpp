@@ -132,25 +132,25 @@ struct BlockDef {
 
 struct WallDef {
     std::string name;
-    std::vector<Vec2> points;  ///< [m] polyline corners (a segment has two), or polygon corners
-    bool closed = false;       ///< join the last corner to the first
-    std::string kind = "auto";  ///< auto (closed and convex: polygon) | polyline | polygon
-    Vec2 offset;                ///< [m] gc2d OFFSET: translation of the points
-    Real angle = 0;             ///< [rad] rotation of the points about their centroid, counter-clockwise
+    std::vector<Vec2> points;       ///< [m] polyline corners (a segment has two), or polygon corners
+    bool closed = false;            ///< join the last corner to the first
+    std::string kind = "polyline";  ///< polyline (segments, containers) | polygon (a convex body)
+    Vec2 offset;                    ///< [m] gc2d OFFSET: translation of the points
+    Real angle = 0;                 ///< [rad] rotation of the points about their centroid, counter-clockwise
     std::string material;
     Vec2 velocity;         ///< [m/s] prescribed rigid translation
     Vec2 surfaceVelocity;  ///< [m/s] conveyor belt (gc2d VELOCITY): tangential part only, the wall rests
     // Vibration (gc2d VIB_*, spec 6.4); vibType empty: none.
-    std::string vibType;             ///< cosine | sawtooth | tapping | triangle
-    Real vibDirection = kPi / 2;     ///< [rad]
-    Real vibWidth = 0;               ///< [m] W
-    Real vibFrequency = 0;           ///< [1/s]
+    std::string vibType;              ///< cosine | sawtooth | tapping | triangle
+    Real vibDirection = kPi / 2;      ///< [rad]
+    Real vibWidth = 0;                ///< [m] W
+    Real vibFrequency = 0;            ///< [1/s]
     Real vibFrom = 0, vibTo = 1e300;  ///< [s]
     // Piston (gc2d PISTON_*, spec 6.3); pistonForce unset: none.
     std::optional<Real> pistonForce;  ///< [N] target force (per unit depth)
     Real pistonDirection = -kPi / 2;  ///< [rad] direction of motion
     Real pistonMaxSpeed = 1;          ///< [m/s] PISTON_V_MAX
-    Real pistonGain = 0;              ///< [m/(N s)] 0: pistonMaxSpeed / (0.1 pistonForce)
+    Real pistonGain = 0;              ///< [m/(N s)] 0: pistonMaxSpeed / pistonForce
     Real pistonFrom = 0;              ///< [s]
     // Rotation about a pivot (a truly rotating drum).
     Real omega = 0;             ///< [rad/s]

@@ -18,9 +18,9 @@ namespace granulab::model {
 /// gc2d_drum (spec 6.2): a ring of `count` convex wall bodies of inner radius r and thickness d.
 struct DrumDef {
     std::string name;
-    Vec2 centre;            ///< [m]
-    Real innerRadius = 0;   ///< [m] r
-    Real thickness = 0;     ///< [m] d
+    Vec2 centre;           ///< [m]
+    Real innerRadius = 0;  ///< [m] r
+    Real thickness = 0;    ///< [m] d
     std::int64_t count = 24;
     Real surfaceSpeed = 0;  ///< [m/s] inner-surface speed, counter-clockwise positive
     bool rotating = false;  ///< false: fixed ring lined with a belt (gc2d); true: the ring turns
@@ -33,9 +33,9 @@ struct InsertDef {
     std::string shape = "disk";  ///< "disk" or a [[shape]] name (a grain shape draws one per particle)
     SizeDistDef radius;          ///< disks
     std::string material;
-    Vec2 velocity;      ///< [m/s]
-    Real angle = 0;     ///< [rad] added to the shape's rotation draw
-    Real omega = 0;     ///< [rad/s]
+    Vec2 velocity;               ///< [m/s]
+    Real angle = 0;              ///< [rad] added to the shape's rotation draw
+    Real omega = 0;              ///< [rad/s]
     std::int64_t attempts = 20;  ///< overlap-safe placement: tries before an insertion is skipped
 };
 
@@ -43,7 +43,7 @@ struct InsertDef {
 /// [x - b/2, x + b/2], the width b shrinking linearly from `width` to `widthEnd` over the window.
 struct SourceDef {
     std::string name;
-    Vec2 position{0, 0.01};  ///< [m] (x, y): y absolute (ABS) or above the pile top (REL)
+    Vec2 position{0, 0.01};         ///< [m] (x, y): y absolute (ABS) or above the pile top (REL)
     std::string placement = "abs";  ///< "abs" | "rel"
     Real width = 0;                 ///< [m] b at `from`
     std::optional<Real> widthEnd;   ///< [m] b at `to` (default: width; 0 gives the layered pile)
@@ -57,10 +57,10 @@ struct SourceDef {
 /// the domain. Emits one particle per step when (t - from) pps > emitted + dt (Eq. 4.1).
 struct InletDef {
     std::string name;
-    Vec2 a, b;                ///< [m] edge end points
-    Real rate = 0;            ///< [1/s] pps
+    Vec2 a, b;                  ///< [m] edge end points
+    Real rate = 0;              ///< [1/s] pps
     Real from = 0, to = 1e300;  ///< [s]
-    bool inset = true;        ///< centre offset R into the domain, u in [R/L, 1 - R/L] (spec [R])
+    bool inset = true;          ///< centre offset R into the domain, u in [R/L, 1 - R/L] (spec [R])
     InsertDef insert;
     SourceLoc loc;
 };
@@ -71,11 +71,11 @@ struct InletDef {
 struct OutletDef {
     std::string name;
     bool isRegion = false;
-    Vec2 a, b;                          ///< [m] edge (n_out = left of a -> b)
+    Vec2 a, b;                                    ///< [m] edge (n_out = left of a -> b)
     Real xmin = 0, ymin = 0, xmax = 0, ymax = 0;  ///< [m] region
-    bool removeInside = true;           ///< region: remove particles inside (else outside)
-    Real openAt = 0;                    ///< [s]
-    std::string material;               ///< lid material (edge outlets with openAt > 0)
+    bool removeInside = true;                     ///< region: remove particles inside (else outside)
+    Real openAt = 0;                              ///< [s]
+    std::string material;                         ///< lid material (edge outlets with openAt > 0)
     SourceLoc loc;
 };
 
@@ -101,20 +101,20 @@ struct BoundaryDef {
 /// linearly over the tilt window.
 struct GravityDef {
     bool present = false;
-    std::string type = "constant";  ///< constant | linear | step | smooth_step
-    Real g1 = 9.81, g2 = 9.81;      ///< [m/s^2]
-    Real t1 = 0, t2 = 1;            ///< [s]
-    Real steps = 5;                 ///< p1
-    Real ramp = 0.5;                ///< p2 in [0, 1]
+    std::string type = "constant";                      ///< constant | linear | step | smooth_step
+    Real g1 = 9.81, g2 = 9.81;                          ///< [m/s^2]
+    Real t1 = 0, t2 = 1;                                ///< [s]
+    Real steps = 5;                                     ///< p1
+    Real ramp = 0.5;                                    ///< p2 in [0, 1]
     Real direction1 = -kPi / 2, direction2 = -kPi / 2;  ///< [rad] counter-clockwise from +x
-    Real tilt1 = 0, tilt2 = 0;                         ///< [s] tilt window (default: the window)
+    Real tilt1 = 0, tilt2 = 0;                          ///< [s] tilt window (default: the window)
     SourceLoc loc;
 };
 
 /// A change of contact-law parameters at a time (gc2d 6.7): e.g. friction switched off.
 struct ChangeDef {
-    Real at = 0;                   ///< [s]
-    std::int64_t contact = -1;     ///< index of the [[contact]] entry
+    Real at = 0;                ///< [s]
+    std::int64_t contact = -1;  ///< index of the [[contact]] entry
     std::map<std::string, LawParamDef> set;
     SourceLoc loc;
 };
@@ -128,8 +128,8 @@ struct MachineDefs {
     GravityDef gravity;
     std::vector<ChangeDef> changes;
     bool any() const noexcept {
-        return !drums.empty() || !sources.empty() || !inlets.empty() || !outlets.empty() || !boundaries.empty() ||
-               gravity.present || !changes.empty();
+        return !drums.empty() || !sources.empty() || !inlets.empty() || !outlets.empty() ||
+               !boundaries.empty() || gravity.present || !changes.empty();
     }
 };
 

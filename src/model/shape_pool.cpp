@@ -9,7 +9,6 @@
 #include <stdexcept>
 
 #include "core/binary_io.hpp"
-
 #include "geom/polygon.hpp"
 
 namespace granulab::model {

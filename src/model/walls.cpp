@@ -15,7 +15,9 @@ namespace granulab::model {
 
 namespace {
 
-Real fraction(Real x) noexcept { return x - std::floor(x); }
+Real fraction(Real x) noexcept {
+    return x - std::floor(x);
+}
 
 /// The driver's parameters as numbers, to tell whether a resumed scene changed a wall's motion.
 std::vector<Real> driverKey(const WallDriver& d) {
@@ -78,7 +80,7 @@ Real vibrationMaxSpeed(const WallDriver& d) noexcept {
         case VibrationType::Cosine:
             return kPi * f * W;
         case VibrationType::Sawtooth:
-            return W * f;  // plus the reset jump of W, which is a teleport (gc2d's behaviour)
+            return W * f;             // plus the reset jump of W, which is a teleport (gc2d's behaviour)
         case VibrationType::Tapping:  // max of 60 pi f W sin^29 cos at tan^2 = 29
             return 60 * kPi * f * W * std::pow(29.0 / 30.0, 14.5) / std::sqrt(30.0);
         case VibrationType::Triangle:
@@ -127,7 +129,8 @@ void WallSet::addPolyline(const std::string& name, const std::vector<Vec2>& poin
     setDriver(static_cast<std::uint32_t>(walls.size() - 1), d);
 }
 
-void WallSet::addPolygon(const std::string& name, const std::vector<Vec2>& ccwCorners, std::uint32_t material) {
+void WallSet::addPolygon(const std::string& name, const std::vector<Vec2>& ccwCorners,
+                         std::uint32_t material) {
     addPolyline(name, ccwCorners, true, material, {});
     Wall& w = walls.back();
     w.body = true;
@@ -256,9 +259,9 @@ void WallSet::save(std::ostream& os) const {
     writePod<std::uint64_t>(os, walls.size());
     for (const Wall& w : walls) {
         writeVector(os, driverKey(w.driver));
-        for (const Real v : {w.displacement.x, w.displacement.y, w.rotation, w.velocity.x, w.velocity.y, w.omega,
-                             w.anchorDisplacement.x, w.anchorDisplacement.y, w.anchorRotation, w.anchorTime,
-                             w.pistonSpeed})
+        for (const Real v :
+             {w.displacement.x, w.displacement.y, w.rotation, w.velocity.x, w.velocity.y, w.omega,
+              w.anchorDisplacement.x, w.anchorDisplacement.y, w.anchorRotation, w.anchorTime, w.pistonSpeed})
             writePod(os, v);
     }
 }
@@ -272,7 +275,8 @@ void WallSet::load(std::istream& is, Real time) {
         Real v[11];
         for (Real& x : v) x = readPod<Real>(is);
         for (const Real x : v)
-            if (!std::isfinite(x)) throw std::runtime_error("checkpoint corrupt (a wall position is not finite)");
+            if (!std::isfinite(x))
+                throw std::runtime_error("checkpoint corrupt (a wall position is not finite)");
         w.displacement = {v[0], v[1]};
         w.rotation = v[2];
         w.velocity = {v[3], v[4]};
@@ -287,7 +291,8 @@ void WallSet::load(std::istream& is, Real time) {
             w.anchorRotation = w.rotation;
             w.anchorDisplacement = w.displacement;
             if (w.driver.kind == WallDriver::Kind::Vibration)
-                w.anchorDisplacement = w.displacement - w.driver.direction * vibrationAt(w.driver, time).displacement;
+                w.anchorDisplacement =
+                    w.displacement - w.driver.direction * vibrationAt(w.driver, time).displacement;
         }
     }
     place(time);

@@ -37,11 +37,11 @@ struct WallDriver {
     Vec2 velocity;  ///< [m/s] Velocity: rigid translation
     // Vibration (gc2d 6.4): A(t_c) along `direction`, t_c = clamp(t, from, to).
     VibrationType vibration = VibrationType::Cosine;
-    Vec2 direction{0, 1};    ///< unit; vibration and piston
-    Real width = 0;          ///< [m] W
-    Real frequency = 0;      ///< [1/s] f
-    Real from = 0;           ///< [s] start of the vibration window / piston start
-    Real to = 1e300;         ///< [s] end of the vibration window
+    Vec2 direction{0, 1};  ///< unit; vibration and piston
+    Real width = 0;        ///< [m] W
+    Real frequency = 0;    ///< [1/s] f
+    Real from = 0;         ///< [s] start of the vibration window / piston start
+    Real to = 1e300;       ///< [s] end of the vibration window
     // Piston (gc2d 6.3): v = clamp(gain (F_target - F), -vMax, vMax) along `direction`, F the
     // contact force the grains exert against the motion.
     Real targetForce = 0;  ///< [N] (per unit depth in 2D)
@@ -57,7 +57,7 @@ struct Wall {
     std::uint32_t firstSegment = 0, segmentCount = 0;
     bool body = false;  ///< convex polygon body: its segments are the polygon's edges, counter-clockwise
     std::uint32_t material = 0;
-    Vec2 surfaceVelocity;  ///< [m/s] conveyor belt: only its tangential part acts, the wall does not move
+    Vec2 surfaceVelocity;     ///< [m/s] conveyor belt: only its tangential part acts, the wall does not move
     Real solidUntil = 1e300;  ///< [s] the wall exists for t < solidUntil (an outlet's lid)
     WallDriver driver;
     // State (advanced by WallSet::advance, saved by save()):
@@ -79,8 +79,8 @@ struct WallSet {
     /// [m] current start corner of every segment (segments[k].a), so that a body's corners are
     /// contiguous: wall w's polygon is corners[firstSegment ... firstSegment + segmentCount).
     std::vector<Vec2> corners;
-    std::vector<Real> bodyInradius;  ///< [m] per wall: largest circle about the centroid inside (bodies)
-    std::vector<Vec2> bodyCentroid;  ///< [m] per wall: current centroid (bodies)
+    std::vector<Real> bodyInradius;   ///< [m] per wall: largest circle about the centroid inside (bodies)
+    std::vector<Vec2> bodyCentroid;   ///< [m] per wall: current centroid (bodies)
     std::vector<Vec2> bodyCentroid0;  ///< [m] per wall: centroid in the reference placement
 
     /// Adds a polyline wall; `closed` joins the last corner to the first.

@@ -156,7 +156,8 @@ public:
             c.push_back("gravity_y");
         }
         if (m_world.flow().active()) {  // particles in and out (cumulative counts and masses)
-            for (const char* k : {"particles", "mass", "inserted", "skipped", "removed", "mass_in", "mass_out"})
+            for (const char* k :
+                 {"particles", "mass", "inserted", "skipped", "removed", "mass_in", "mass_out"})
                 c.push_back(k);
             for (const auto& o : m_world.flow().config().outlets) {
                 c.push_back("outlet_" + o.name + "_removed");
@@ -366,7 +367,8 @@ private:
     dem::World m_world;
     Real m_dt;
     std::int64_t m_endStep;
-    std::size_t m_initialParticles;  ///< the scene's particles at t = 0 (sources and outlets change the count)
+    std::size_t
+        m_initialParticles;  ///< the scene's particles at t = 0 (sources and outlets change the count)
     std::int64_t m_loopStartStep = 0;
     std::uint64_t m_guardSkips = 0;  ///< contact evaluations skipped by the overlap guard
     dem::Energies m_lastEnergy;

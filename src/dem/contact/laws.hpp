@@ -380,10 +380,8 @@ struct AreaFriction {
         LawParamSpec mu = lawParam("mu", "-", 0, 1, false, "required",
                                    "friction coefficient (gc2d default 0.6; the gc2d spec allows [0, 1))");
         mu.maxExclusive = true;
-        return {
-            mu,
-            lawParam("kt", "N/m", 0, kUnbounded, false, "2/7 E", "tangential spring stiffness"), damped, rab,
-            total};
+        return {mu, lawParam("kt", "N/m", 0, kUnbounded, false, "2/7 E", "tangential spring stiffness"),
+                damped, rab, total};
     }
     static AreaFriction make(const LawParams& p) {
         AreaFriction f;
