@@ -196,6 +196,8 @@ bool hasPolygons(const model::SceneDef& scene) noexcept {
         if (p.shape != "disk") return true;
     for (const auto& b : scene.blocks)
         if (b.shape != "disk") return true;
+    for (const auto& h : scene.heaps)  // a named shape or plain rectangles (size)
+        if (h.shape != "disk" || h.size.x != 0 || h.size.y != 0) return true;
     return false;
 }
 
