@@ -239,11 +239,14 @@ void checkGc2dBlock(Checker& c, const model::BlockDef& b, std::size_t k) {
     }
     if (!(b.jitterFraction > 0 && b.jitterFraction <= 1))
         d.error(b.loc, key + ".jitter_fraction", fmt::format("must be in (0, 1], got {}", b.jitterFraction));
-    if (!(b.directionRange.y >= b.directionRange.x))
-        d.error(b.loc, key + ".direction_range",
-                fmt::format(
-                    "[a1, a2] = [{}, {}] rad needs a2 >= a1; allowed any finite a1 <= a2 (default [0, 2 pi])",
-                    b.directionRange.x, b.directionRange.y));
+    if (!(b.directionRange.y >= b.directionRange.x) ||
+        !std::isfinite(b.directionRange.y - b.directionRange.x))
+        d.error(
+            b.loc, key + ".direction_range",
+            fmt::format(
+                "[a1, a2] = [{}, {}] rad needs a2 >= a1 and a finite a2 - a1; allowed a1 <= a2 (default [0, "
+                "2 pi])",
+                b.directionRange.x, b.directionRange.y));
     if (!(b.speedRange.x >= 0 && b.speedRange.y >= b.speedRange.x))
         d.error(b.loc, key + ".speed_range",
                 fmt::format("[v1, v2] = [{}, {}] m/s needs 0 <= v1 <= v2; allowed [0, inf)", b.speedRange.x,

@@ -134,6 +134,13 @@ TEST(Cli, Gc2dGeneratorBadInput) {
         {"negative_speed",
          std::string(kBase) + block + "spacing = 0.03\nspeed_range = [-1.0, 1.0]\n",
          {"bad.toml:19", "block[0].speed_range", "0 <= v1 <= v2"}},
+        {"reversed_directions",
+         std::string(kBase) + block +
+             "spacing = 0.03\nspeed_range = [0.0, 1.0]\ndirection_range = [1.0, 0.5]\n",
+         {"bad.toml:19", "block[0].direction_range", "a2 >= a1"}},
+        {"spacing_on_rect",
+         std::string(kBase) + block + "lattice = \"rect\"\ngrid = [0.03, 0.03]\nspacing = 0.03\n",
+         {"bad.toml:19", "block[0].spacing", "uses grid"}},
         {"jitter_overlap",  // f = 1 lets neighbours 0.021 m apart come closer than 0.02 m
          std::string(kBase) + block + "lattice = \"rect\"\ngrid = [0.021, 0.021]\njitter = \"equal\"\n",
          {"overlap by", "bad.toml:19"}},
