@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
-// Particle generation: lattices, random sequential addition, size distributions, thermal
-// velocities, polygon shapes (gc2d spec section 2.3). Every random draw comes from
-// CounterRng(seed, stream): block positions, radii and temperatures from stream 1000 + block
+// Particle generation: lattices (and gc2d's rect/fcc GENERATE_BLOCK lattices with jitter and
+// velocity ranges, spec section 6.5), random sequential addition, size distributions, thermal
+// velocities, polygon shapes (gc2d spec section 2.3); heaps are in dem/generate_heap.cpp. Every random draw
+// comes from CounterRng(seed, stream): block positions, radii and temperatures from stream 1000 + block
 // index, polygon shapes and rotations from the separate shape streams below, so adding polygon
 // grains never changes the draws of disk scenes.
 #include "dem/generate.hpp"
@@ -59,6 +60,57 @@ std::vector<Vec2> latticeSites(const BlockDef& b) {
     return sites;
 }
 
+/// Sites of the gc2d lattices (GENERATE_BLOCK, spec section 6.5): rect rows dy apart with sites
+/// dx apart; fcc the same with every other row shifted by dx/2. Same filling rule as
+/// latticeSites (half-open region, row by row, `count` cap).
+std::vector<Vec2> gridSites(const BlockDef& b) {
+    std::vector<Vec2> sites;
+    const Real dx = b.grid.x, dy = b.grid.y;
+    const bool fcc = b.lattice == BlockDef::Lattice::Fcc;
+    const Vec2 origin = b.origin.value_or(Vec2{b.xmin + 0.5 * dx, b.ymin + 0.5 * dy});
+    const long row0 = static_cast<long>(std::ceil((b.ymin - origin.y) / dy - 1e-12));
+    for (long row = row0;; ++row) {
+        const Real y = origin.y + static_cast<Real>(row) * dy;
+        if (y >= b.ymax) break;
+        const Real x0 = origin.x + ((fcc && (row % 2 != 0)) ? 0.5 * dx : 0.0);
+        const long col0 = static_cast<long>(std::ceil((b.xmin - x0) / dx - 1e-12));
+        for (long col = col0;; ++col) {
+            const Real x = x0 + static_cast<Real>(col) * dx;
+            if (x >= b.xmax) break;
+            if (x < b.xmin || y < b.ymin) continue;
+            sites.push_back({x, y});
+            if (b.count >= 0 && static_cast<std::int64_t>(sites.size()) >= b.count) return sites;
+        }
+    }
+    return sites;
+}
+
+/// gc2d *_EQUAL / *_GAUSS: each site moves by f dx (u - 1/2) along x and f dy (u' - 1/2) along y,
+/// u uniform in [0, 1) or gc2d's special truncated Gaussian (N(1/2, 1/10) on [0, 1]), so within
+/// +-f dx/2, +-f dy/2 (erratum 10: the y interval uses dy).
+void jitterSites(const BlockDef& b, std::vector<Vec2>& sites, CounterRng& rng) {
+    if (b.jitter == BlockDef::Jitter::None) return;
+    const bool gauss = b.jitter == BlockDef::Jitter::Gauss;
+    const Real wx = b.jitterFraction * b.grid.x, wy = b.jitterFraction * b.grid.y;
+    for (Vec2& s : sites) {
+        const Real ux = gauss ? model::specialGaussianUnit(rng) : rng.uniform();
+        const Real uy = gauss ? model::specialGaussianUnit(rng) : rng.uniform();
+        s += Vec2{wx * (ux - 0.5), wy * (uy - 0.5)};
+    }
+}
+
+/// gc2d ANGLE_RANGE / VELOCITY_RANGE: adds a velocity of uniform direction in directionRange and
+/// uniform magnitude in speedRange to particles [first, end). No draws for speed_range [0, 0].
+void rangeVelocities(const BlockDef& b, std::vector<InitialParticle>& ps, std::size_t first,
+                     CounterRng& rng) {
+    if (!(b.speedRange.y > 0)) return;
+    for (std::size_t k = first; k < ps.size(); ++k) {
+        const Real angle = rng.uniform(b.directionRange.x, b.directionRange.y);
+        const Real speed = rng.uniform(b.speedRange.x, b.speedRange.y);
+        ps[k].velocity += Vec2{speed * std::cos(angle), speed * std::sin(angle)};
+    }
+}
+
 /// Random sequential addition of disks with radii `radii` (largest first) into the region,
 /// avoiding `existing` disks; returns false if a disk could not be placed.
 bool placeRandom(const BlockDef& b, std::vector<Real>& radii, CounterRng& rng,
@@ -113,6 +165,10 @@ bool placeRandom(const BlockDef& b, std::vector<Real>& radii, CounterRng& rng,
 /// kBlockShapeStream + b (far from the block streams 1000 + b).
 constexpr std::uint64_t kParticleShapeStream = 0x7368617065000000ULL;  // "shape"
 constexpr std::uint64_t kBlockShapeStream = kParticleShapeStream + (1ULL << 32);
+/// gc2d block streams (jitter, velocity ranges): kBlockJitterStream + b, kBlockRangeStream + b,
+/// separate from the others, so the gc2d keys never change the draws of existing scenes.
+constexpr std::uint64_t kBlockJitterStream = kParticleShapeStream + (2ULL << 32);
+constexpr std::uint64_t kBlockRangeStream = kParticleShapeStream + (3ULL << 32);
 
 Vec2 rotated(Vec2 v, Real angle) noexcept {
     const Real c = std::cos(angle), s = std::sin(angle);
@@ -298,7 +354,13 @@ InitialParticles generateParticles(const SceneDef& scene, const std::vector<std:
                                         estimate));
                 continue;
             }
-            sites = latticeSites(b);
+            if (b.lattice == BlockDef::Lattice::Rect || b.lattice == BlockDef::Lattice::Fcc) {
+                sites = gridSites(b);
+                CounterRng jitterRng(scene.run.seed, kBlockJitterStream + bi);
+                jitterSites(b, sites, jitterRng);
+            } else {
+                sites = latticeSites(b);
+            }
             radii.resize(sites.size());
             if (def) {
                 // A grain's ellipse (a deterministic shape's centroid) sits on the lattice site.
@@ -332,7 +394,10 @@ InitialParticles generateParticles(const SceneDef& scene, const std::vector<std:
             out.particles.push_back(ip);
         }
         thermalVelocities(out.particles, first, b.temperature, masses, rng);
+        CounterRng rangeRng(scene.run.seed, kBlockRangeStream + bi);
+        rangeVelocities(b, out.particles, first, rangeRng);
     }
+    generateHeaps(scene, materialNames, out, diags);  // ids after the blocks
     return out;
 }
 

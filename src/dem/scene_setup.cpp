@@ -129,20 +129,23 @@ void checkStartOverlaps(const model::SceneDef& scene, const InitialParticles& in
 }
 
 /// Particles the scene asks for, before generating any: explicit ones, blocks' counts, lattice
-/// blocks' estimates (may be inf).
+/// blocks' and heaps' estimates (may be inf).
 double plannedParticles(const model::SceneDef& scene) {
     double n = static_cast<double>(scene.particles.size());
     for (const auto& b : scene.blocks)
         n += b.count >= 0 || b.lattice == model::BlockDef::Lattice::Random
                  ? static_cast<double>(std::max<std::int64_t>(b.count, 0))
                  : latticeSiteEstimate(b);
+    for (const auto& h : scene.heaps) n += model::heapSiteEstimate(h, scene.shapes);
     return n;
 }
 
 /// The particle count and its memory fit this machine (before generation allocates anything).
 void checkParticleBudget(const model::SceneDef& scene, Diagnostics& d) {
     const double n = plannedParticles(scene);
-    const SourceLoc& where = scene.blocks.empty() ? SourceLoc{scene.path, 0, 0} : scene.blocks.front().loc;
+    const SourceLoc& where = !scene.blocks.empty()  ? scene.blocks.front().loc
+                             : !scene.heaps.empty() ? scene.heaps.front().loc
+                                                    : SourceLoc{scene.path, 0, 0};
     if (n > kMaxParticleCount) {
         d.error(where, "block",
                 fmt::format("the scene asks for about {:.3g} particles; allowed at most {:.0f} (32-bit ids)",
@@ -262,8 +265,8 @@ PreparedScene prepareScene(const model::SceneDef& scene, Diagnostics& diags) {
     }
     if (out.initial.particles.empty() && inserts.empty())
         diags.error({scene.path, 0, 0}, "",
-                    "the scene has no particles ([[particle]], [[block]], or a [[source]] or [[inlet]] that "
-                    "inserts them)");
+                    "the scene has no particles ([[particle]], [[block]], [[heap]], or a [[source]] or "
+                    "[[inlet]] that inserts them)");
     for (std::size_t m = 0; m < nm; ++m) {
         if (usedByParticles[m] && !(scene.materials[m].density > 0))
             diags.error(scene.materials[m].loc, fmt::format("material[{}].density", m),
@@ -286,7 +289,7 @@ PreparedScene prepareScene(const model::SceneDef& scene, Diagnostics& diags) {
                 sp.loc, fmt::format("spring[{}].particle", k),
                 fmt::format(
                     "particle id {} does not exist; allowed [0, {}] (generation order: [[particle]]s, "
-                    "then [[block]]s)",
+                    "then [[block]]s, then [[heap]]s)",
                     sp.particle, static_cast<std::int64_t>(out.initial.particles.size()) - 1));
     }
     checkStartOverlaps(scene, out.initial, diags);

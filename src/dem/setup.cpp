@@ -201,6 +201,8 @@ bool hasPolygons(const model::SceneDef& scene) noexcept {
         if (s.insert.shape != "disk") return true;
     for (const auto& i : scene.machines.inlets)
         if (i.insert.shape != "disk") return true;
+    for (const auto& h : scene.heaps)  // a named shape or plain rectangles (size)
+        if (h.shape != "disk" || h.size.x != 0 || h.size.y != 0) return true;
     return false;
 }
 

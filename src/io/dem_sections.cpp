@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The dem engine's sections (io/dem_sections.hpp; docs/scene-format.md "[dem]" to "[[spring]]",
-// gc2d spec sections 2.3 and 3.8). Syntax, type and unknown-key errors only; io/validate.hpp checks ranges.
+// gc2d spec sections 2.3, 3.8 and 6.5). Syntax, type and unknown-key errors only; io/validate.hpp checks
+// ranges.
 #include "io/dem_sections.hpp"
 
 #include <fmt/format.h>
@@ -235,12 +236,28 @@ void readParticle(TableReader& r, model::ParticleDef& p, const std::vector<model
     r.string("material", p.material);
 }
 
+/// The gc2d GENERATE_BLOCK keys of a [[block]] (spec section 6.5): rect/fcc grid, jitter,
+/// velocity ranges.
+void readBlockGc2d(TableReader& r, model::BlockDef& b) {
+    r.vec2("grid", b.grid);
+    std::string jitter = "none";
+    r.choice("jitter", jitter, {"none", "gauss", "equal"});
+    b.jitter = jitter == "gauss"   ? model::BlockDef::Jitter::Gauss
+               : jitter == "equal" ? model::BlockDef::Jitter::Equal
+                                   : model::BlockDef::Jitter::None;
+    r.number("jitter_fraction", b.jitterFraction);
+    r.vec2("direction_range", b.directionRange);
+    r.vec2("speed_range", b.speedRange);
+}
+
 void readBlock(TableReader& r, model::BlockDef& b, const std::vector<model::ShapeDef>& shapes) {
     b.loc = r.loc();
     std::string lattice = "hexagonal";
-    r.choice("lattice", lattice, {"hexagonal", "square", "random"});
+    r.choice("lattice", lattice, {"hexagonal", "square", "random", "rect", "fcc"});
     b.lattice = lattice == "hexagonal" ? model::BlockDef::Lattice::Hexagonal
                 : lattice == "square"  ? model::BlockDef::Lattice::Square
+                : lattice == "rect"    ? model::BlockDef::Lattice::Rect
+                : lattice == "fcc"     ? model::BlockDef::Lattice::Fcc
                                        : model::BlockDef::Lattice::Random;
     r.string("shape", b.shape);
     std::vector<Real> region;
@@ -264,6 +281,33 @@ void readBlock(TableReader& r, model::BlockDef& b, const std::vector<model::Shap
     r.string("material", b.material);
     r.vec2("velocity", b.velocity);
     r.number("temperature", b.temperature);
+    readBlockGc2d(r, b);
+}
+
+/// [[heap]]: a regular pile of gc2d's heap.pm (spec section 6.5).
+void readHeap(TableReader& r, model::HeapDef& h) {
+    h.loc = r.loc();
+    std::string stacking = "hexagonal";
+    r.choice("stacking", stacking, {"hexagonal", "rectangular"});
+    h.stacking =
+        stacking == "hexagonal" ? model::HeapDef::Stacking::Hexagonal : model::HeapDef::Stacking::Rectangular;
+    Vec2 range;
+    if (r.vec2("x_range", range)) {
+        h.xLeft = range.x;
+        h.xRight = range.y;
+    } else if (!r.table().get("x_range")) {
+        r.diags().error(h.loc, r.keyPath("x_range"), "missing: [x_left, x_right] in m, the ends of the pile");
+    }
+    r.number("base", h.base);
+    if (!r.number("slope", h.slope) && !r.table().get("slope"))
+        r.diags().error(h.loc, r.keyPath("slope"),
+                        "missing: slope angle psi of the flanks in rad, e.g. 0.5 (hexagonal stacks: "
+                        "below arctan(2 height / width))");
+    r.vec2("spacing", h.gap);
+    r.string("shape", h.shape);
+    r.number("radius", h.radius);
+    r.vec2("size", h.size);
+    r.string("material", h.material);
 }
 
 void readWall(TableReader& r, model::WallDef& w) {
@@ -348,6 +392,11 @@ void readDemSections(TableReader& root, model::SceneDef& scene) {
         readBlock(t, b, scene.shapes);
         scene.blocks.push_back(b);
     });
+    forEachTable(root, "heap", [&](TableReader& t, std::size_t) {  // after the blocks: ids follow theirs
+        model::HeapDef h;
+        readHeap(t, h);
+        scene.heaps.push_back(h);
+    });
     forEachTable(root, "wall", [&](TableReader& t, std::size_t) {
         model::WallDef w;
         readWall(t, w);
@@ -366,8 +415,8 @@ void readDemSections(TableReader& root, model::SceneDef& scene) {
 SceneSections demSceneSections() {
     SceneSections s;
     s.engine = "dem";
-    s.sections = {"dem",  "material", "contact", "shape",  "particle", "block",   "wall",  "spring",
-                  "drum", "source",   "inlet",   "outlet", "boundary", "gravity", "change"};
+    s.sections = {"dem",    "material", "contact", "shape", "particle", "block",    "heap",    "wall",
+                  "spring", "drum",     "source",  "inlet", "outlet",   "boundary", "gravity", "change"};
     s.required = "dem";
     s.requiredHint = "needs at least dt";
     s.needsEndTime = true;

@@ -10,6 +10,7 @@
 #include "core/suggest.hpp"
 #include "geom/polygon.hpp"
 #include "geom/segment.hpp"
+#include "model/gc2d_generators.hpp"
 #include "model/grain_shapes.hpp"
 
 namespace granulab::io {
@@ -165,21 +166,28 @@ void checkShapes(const model::SceneDef& sc, Diagnostics& d, std::vector<std::str
         const std::string key = fmt::format("block[{}]", k);
         if (!known(b.loc, key + ".shape", b.shape) || b.shape == "disk") continue;
         if (polygonUser.empty()) polygonUser = fmt::format("{} ({}, shape '{}')", key, b.loc.str(), b.shape);
-        if (b.lattice == model::BlockDef::Lattice::Random || !(b.spacing > 0)) continue;
+        const Real spacing = model::nearestSiteDistance(b);  // b.spacing for hexagonal and square
+        if (!(spacing > 0)) continue;
+        const bool gc2d =
+            b.lattice == model::BlockDef::Lattice::Rect || b.lattice == model::BlockDef::Lattice::Fcc;
         // Shapes of fixed size and orientation (square lattices of squares, as in LAMMPS's
         // polygon piles) may sit closer than their circumcircles: the exact start-overlap check
         // of the generated particles decides. Random sizes or rotations need the bound.
         const model::ShapeDef& shape = *find(b.shape);
         if (shape.kind != "grain" && shape.rotationMode == "const") continue;
         const Real rmax = model::maxPlacementRadius(shape);
-        if (rmax > 0 && 2 * rmax > b.spacing)
-            d.error(
-                b.loc, key + ".spacing",
-                fmt::format(
-                    "spacing {:.6g} m is smaller than twice the largest circumradius {:.6g} m of shape '{}': "
-                    "neighbours could overlap",
-                    b.spacing, 2 * rmax, b.shape));
+        if (rmax > 0 && 2 * rmax > spacing)
+            d.error(b.loc, key + (gc2d ? ".grid" : ".spacing"),
+                    fmt::format(
+                        "{} {:.6g} m is smaller than twice the largest circumradius {:.6g} m of shape '{}': "
+                        "neighbours could overlap",
+                        gc2d ? "the nearest-site distance of grid" : "spacing", spacing, 2 * rmax, b.shape));
     }
+    for (std::size_t k = 0; k < sc.heaps.size() && polygonUser.empty(); ++k)  // shapes: checkHeap()
+        if (sc.heaps[k].shape != "disk" || sc.heaps[k].size.x != 0 || sc.heaps[k].size.y != 0)
+            polygonUser = fmt::format("heap[{}] ({}, {})", k, sc.heaps[k].loc.str(),
+                                      sc.heaps[k].shape != "disk" ? "shape '" + sc.heaps[k].shape + "'"
+                                                                  : std::string("rectangles"));
     if (!polygonUser.empty() && sc.dem.massModel != "disk")
         d.error(
             sc.dem.loc, "dem.mass_model",

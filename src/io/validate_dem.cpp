@@ -15,6 +15,7 @@
 #include "geom/segment.hpp"
 #include "io/shape_checks.hpp"
 #include "io/validate_machines.hpp"
+#include "model/gc2d_generators.hpp"
 #include "model/material_names.hpp"
 #include "model/size_bounds.hpp"
 
@@ -145,6 +146,9 @@ void checkStatic(const model::SceneDef& sc, Checker& c, const std::vector<std::s
         if (b.lattice == model::BlockDef::Lattice::Random) {
             if (b.count <= 0)
                 d.error(b.loc, key + ".count", fmt::format("random blocks need count > 0, got {}", b.count));
+        } else if (b.lattice == model::BlockDef::Lattice::Rect ||
+                   b.lattice == model::BlockDef::Lattice::Fcc) {
+            // gc2d lattices: checkGc2dBlock()
         } else {
             c.positive(b.loc, key + ".spacing", b.spacing, "m");
             const Real dmax = 2 * model::maxRadius(b.radius);
@@ -194,12 +198,167 @@ void checkStatic(const model::SceneDef& sc, Checker& c, const std::vector<std::s
     c.nonNegative(sc.output.loc, "output.checkpoint_interval", sc.output.checkpointInterval, "s");
 }
 
+/// The gc2d GENERATE_BLOCK keys of block k (spec section 6.5): grid, jitter, velocity ranges.
+void checkGc2dBlock(Checker& c, const model::BlockDef& b, std::size_t k) {
+    using L = model::BlockDef::Lattice;
+    auto& d = c.diags();
+    const std::string key = fmt::format("block[{}]", k);
+    const bool gc2d = b.lattice == L::Rect || b.lattice == L::Fcc;
+    const char* lattice = b.lattice == L::Rect ? "rect" : "fcc";
+    if (gc2d) {
+        if (!(b.grid.x > 0 && b.grid.y > 0 && std::isfinite(b.grid.x) && std::isfinite(b.grid.y)))
+            d.error(
+                b.loc, key + ".grid",
+                fmt::format("lattice '{}' needs grid = [dx, dy] with dx > 0 and dy > 0 [m], got [{}, {}]; "
+                            "allowed (0, inf) each",
+                            lattice, b.grid.x, b.grid.y));
+        if (b.spacing != 0)
+            d.error(
+                b.loc, key + ".spacing",
+                fmt::format("spacing belongs to the hexagonal and square lattices; lattice '{}' uses grid = "
+                            "[dx, dy]",
+                            lattice));
+        const Real nearest = model::nearestSiteDistance(b);
+        const Real dmax = 2 * model::maxRadius(b.radius);
+        if (b.shape == "disk" && nearest > 0 && dmax > nearest)
+            d.error(
+                b.loc, key + ".grid",
+                fmt::format("the nearest sites of lattice '{}' with grid [{}, {}] are {:.6g} m apart, less "
+                            "than the largest diameter {} m: neighbours would overlap",
+                            lattice, b.grid.x, b.grid.y, nearest, dmax));
+        if (b.count < -1 || b.count == 0)
+            d.error(b.loc, key + ".count",
+                    fmt::format("count must be > 0 (or omitted for a full lattice), got {}", b.count));
+    } else {
+        if (b.grid.x != 0 || b.grid.y != 0)
+            d.error(b.loc, key + ".grid",
+                    "grid belongs to the gc2d lattices \"rect\" and \"fcc\"; hexagonal and square lattices "
+                    "use spacing");
+        if (b.jitter != model::BlockDef::Jitter::None)
+            d.error(b.loc, key + ".jitter",
+                    "jitter applies to the lattices \"rect\" and \"fcc\" only; allowed here: \"none\"");
+    }
+    if (!(b.jitterFraction > 0 && b.jitterFraction <= 1))
+        d.error(b.loc, key + ".jitter_fraction", fmt::format("must be in (0, 1], got {}", b.jitterFraction));
+    if (!(b.directionRange.y >= b.directionRange.x) ||
+        !std::isfinite(b.directionRange.y - b.directionRange.x))
+        d.error(
+            b.loc, key + ".direction_range",
+            fmt::format(
+                "[a1, a2] = [{}, {}] rad needs a2 >= a1 and a finite a2 - a1; allowed a1 <= a2 (default [0, "
+                "2 pi])",
+                b.directionRange.x, b.directionRange.y));
+    if (!(b.speedRange.x >= 0 && b.speedRange.y >= b.speedRange.x))
+        d.error(b.loc, key + ".speed_range",
+                fmt::format("[v1, v2] = [{}, {}] m/s needs 0 <= v1 <= v2; allowed [0, inf)", b.speedRange.x,
+                            b.speedRange.y));
+}
+
+/// [[heap]] k (gc2d heap.pm, spec section 6.5): ends, slope, gaps, grain, material.
+void checkHeap(Checker& c, const model::SceneDef& sc, std::size_t k, const std::vector<std::string>& names) {
+    const model::HeapDef& h = sc.heaps[k];
+    auto& d = c.diags();
+    const std::string key = fmt::format("heap[{}]", k);
+    const bool hex = h.stacking == model::HeapDef::Stacking::Hexagonal;
+    c.material(h.loc, key + ".material", h.material, names);
+    if (!(h.xRight > h.xLeft))
+        d.error(h.loc, key + ".x_range",
+                fmt::format("[x_left, x_right] = [{}, {}] m needs x_right > x_left", h.xLeft, h.xRight));
+    if (!(h.gap.x >= 0) || !(h.gap.y >= 0))
+        d.error(
+            h.loc, key + ".spacing",
+            fmt::format("gaps [dx, dy] = [{}, {}] m must be >= 0; allowed [0, inf) each", h.gap.x, h.gap.y));
+    // The grain: exactly one of radius (disks), size (plain rectangles), shape (a [[shape]]).
+    const bool sized = h.size.x != 0 || h.size.y != 0;
+    const bool named = h.shape != "disk";
+    if (sized && named)
+        d.error(h.loc, key + ".size",
+                fmt::format("size makes plain rectangles; it cannot be combined with shape '{}'", h.shape));
+    if (h.radius != 0 && (sized || named))
+        d.error(
+            h.loc, key + ".radius",
+            named ? fmt::format("radius belongs to disks; the size of shape '{}' comes from its [[shape]]",
+                                h.shape)
+                  : std::string("radius belongs to disks; size = [a, b] makes rectangles: give one of them"));
+    if (sized && !(h.size.x > 0 && h.size.y > 0))
+        d.error(h.loc, key + ".size",
+                fmt::format("rectangle edges [a, b] = [{}, {}] m must be > 0; allowed (0, inf) each",
+                            h.size.x, h.size.y));
+    if (!sized && !named) c.positive(h.loc, key + ".radius", h.radius, "m");
+    if (named && !sized) {
+        std::vector<std::string> shapeNames = {"disk"};
+        const model::ShapeDef* def = nullptr;
+        for (const auto& s : sc.shapes) {
+            shapeNames.push_back(s.name);
+            if (s.name == h.shape) def = &s;
+        }
+        if (!def) {
+            d.error(h.loc, key + ".shape",
+                    fmt::format("unknown shape '{}'{}; defined: {}", h.shape, didYouMean(h.shape, shapeNames),
+                                joinList(shapeNames)));
+        } else if (def->kind != "rectangle" && def->kind != "regular") {
+            d.error(
+                h.loc, key + ".shape",
+                fmt::format("shape '{}' is of kind '{}'; a heap stacks disks, rectangle shapes or regular "
+                            "shapes (by their circumcircle)",
+                            h.shape, def->kind));
+        } else if (def->rotationMode != "const" || (def->kind == "rectangle" && def->rotation != 0)) {
+            d.error(h.loc, key + ".shape",
+                    fmt::format("shape '{}' must have rotation_mode = \"const\"{}; a heap stacks its grains "
+                                "upright",
+                                h.shape,
+                                def->kind == "rectangle" ? " and rotation = 0 (swap size instead)" : ""));
+        }
+    }
+    const auto grain = model::heapGrain(h, sc.shapes);
+    const bool slopeFinite = std::isfinite(h.slope);
+    if (!grain) {
+        if (!(h.slope > 0 && h.slope < 0.5 * kPi) || !slopeFinite)
+            d.error(h.loc, key + ".slope",
+                    fmt::format("slope psi = {} rad; allowed (0, {:.6g}) rad", h.slope, 0.5 * kPi));
+        return;
+    }
+    const Real maxSlope = model::heapMaxSlope(h, *grain);
+    if (!(h.slope > 0 && h.slope < maxSlope) || !slopeFinite) {
+        std::string why = "below pi/2";
+        if (hex)
+            why = grain->diskLike || grain->width == grain->height
+                      ? "arctan 2 for hexagonal stacks of disks and squares: steeper flanks overhang"
+                      : fmt::format(
+                            "arctan(2b/a) = arctan(2 x {:.6g} / {:.6g}) for hexagonal stacks of "
+                            "rectangles: steeper flanks overhang",
+                            grain->height, grain->width);
+        d.error(h.loc, key + ".slope",
+                fmt::format("slope psi = {} rad ({:.4g} deg) is not allowed; allowed (0, {:.6g}) rad ({})",
+                            h.slope, h.slope * 180 / kPi, maxSlope, why));
+    }
+    const Real maxGap = model::heapMaxGapX(h, *grain);
+    if (hex && h.gap.x >= 0 && h.gap.y >= 0 && (grain->diskLike ? !(h.gap.x <= maxGap) : !(h.gap.x < maxGap)))
+        d.error(
+            h.loc, key + ".spacing",
+            grain->diskLike
+                ? fmt::format("gap dx = {} m is too wide for a hexagonal stack of disks of radius {:.6g} m "
+                              "(each rests on the two below; rows two apart must not overlap); allowed "
+                              "[0, {:.6g}] m",
+                              h.gap.x, 0.5 * grain->width, maxGap)
+                : fmt::format("gap dx = {} m is too wide for a hexagonal stack of rectangles {:.6g} m wide "
+                              "(each must rest on the two below); allowed [0, {:.6g}) m",
+                              h.gap.x, grain->width, maxGap));
+}
+
+/// gc2d generators: block keys of GENERATE_BLOCK and the heaps.
+void checkGc2dGenerators(const model::SceneDef& sc, Checker& c, const std::vector<std::string>& names) {
+    for (std::size_t k = 0; k < sc.blocks.size(); ++k) checkGc2dBlock(c, sc.blocks[k], k);
+    for (std::size_t k = 0; k < sc.heaps.size(); ++k) checkHeap(c, sc, k, names);
+}
+
 }  // namespace
 
 void checkDemDef(const model::SceneDef& scene, Diagnostics& diags, std::vector<std::string>& warnings) {
     Checker checker(diags);
     checkStatic(scene, checker, model::materialNames(scene));
     checkMachineDefs(scene, diags, model::materialNames(scene));
+    checkGc2dGenerators(scene, checker, model::materialNames(scene));
     checkShapes(scene, diags, warnings);
 }
 

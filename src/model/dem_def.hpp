@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Plain *Def structs of the dem engine's scene sections ([dem], [[material]], [[contact]],
-// [[shape]], [[particle]], [[block]], [[wall]], [[spring]]; docs/scene-format.md), filled by
+// [[shape]], [[particle]], [[block]], [[heap]], [[wall]], [[spring]]; docs/scene-format.md), filled by
 // io/dem_sections.hpp. SI units; 2D masses are per unit depth when the mass model is "disk".
 #pragma once
 #include <cstdint>
@@ -116,7 +116,9 @@ struct ParticleDef {
 /// A block of generated particles: a lattice filling a region, or random non-overlapping
 /// placement of `count` particles in a region.
 struct BlockDef {
-    enum class Lattice { Hexagonal, Square, Random };
+    enum class Lattice { Hexagonal, Square, Random, Rect, Fcc };
+    /// Site displacement of the rect and fcc lattices (gc2d GRID_TYPE *_GAUSS / *_EQUAL).
+    enum class Jitter { None, Gauss, Equal };
     Lattice lattice = Lattice::Hexagonal;
     std::string shape = "disk";  ///< "disk" or the name of a [[shape]] (each particle draws its own grain)
     Real xmin = 0, ymin = 0, xmax = 0, ymax = 0;  ///< [m] region, half-open [min, max)
@@ -127,6 +129,31 @@ struct BlockDef {
     std::string material;
     Vec2 velocity;         ///< [m/s] common velocity
     Real temperature = 0;  ///< [J] random Gaussian velocities, <m v_x^2> = T, zero net momentum
+    // gc2d GENERATE_BLOCK (spec section 6.5; docs/scene-format.md "gc2d lattices and velocity ranges")
+    Vec2 grid;  ///< rect, fcc: [m] (dx, dy) spacing along x and between rows (GRID_DISTANCE)
+    Jitter jitter = Jitter::None;     ///< rect, fcc: displacement of each site within +-dx/2, +-dy/2
+    Real jitterFraction = 1;          ///< scales the jitter interval, (0, 1]
+    Vec2 directionRange{0, 2 * kPi};  ///< [rad] velocity direction, uniform in [a1, a2] (ANGLE_RANGE)
+    Vec2 speedRange{0, 0};            ///< [m/s] velocity magnitude, uniform in [v1, v2] (VELOCITY_RANGE)
+    SourceLoc loc;
+};
+
+/// A regular pile (gc2d heap.pm, spec section 6.5 "Perl heap library"): rows of equal grains
+/// (disks, plain rectangles, or a named rectangle or regular [[shape]]) stacked on the base
+/// y = base between x_range, every centre under the slope lines rising at angle `slope` from both
+/// ends (docs/scene-format.md "[[heap]]").
+struct HeapDef {
+    enum class Stacking { Hexagonal, Rectangular };
+    Stacking stacking =
+        Stacking::Hexagonal;     ///< hexagonal: rows shifted by half a pitch; rectangular: columns
+    Real xLeft = 0, xRight = 0;  ///< [m] ends of the pile (x_l, x_r)
+    Real base = 0;               ///< [m] y0: the bottom row stands on y = base
+    Real slope = 0;              ///< [rad] psi, angle of the flanks
+    Vec2 gap;                    ///< [m] (dx, dy) gaps between row neighbours and between rows
+    std::string shape = "disk";  ///< "disk", or the name of a rectangle or regular [[shape]]
+    Real radius = 0;             ///< [m] disks
+    Vec2 size;                   ///< [m] (a, b) plain rectangles (a along x); (0, 0): not used
+    std::string material;
     SourceLoc loc;
 };
 
@@ -165,7 +192,7 @@ struct WallDef {
 /// (it rests before and after). Force k (free end - attachment point), zero rest length, applied
 /// at the attachment point (so it also makes a torque).
 struct SpringDef {
-    std::int64_t particle = -1;  ///< particle id (generation order: [[particle]]s, then [[block]]s)
+    std::int64_t particle = -1;  ///< particle id (generation order: [[particle]]s, [[block]]s, [[heap]]s)
     Real stiffness = 0;          ///< [N/m] (gc2d DRAG_K, default 100)
     Vec2 attach;                 ///< [m] attachment point relative to the centroid, body frame
     Vec2 pullStart;              ///< [m] free end at t <= from (world frame)

@@ -45,6 +45,7 @@ struct SceneDef {
     std::vector<ShapeDef> shapes;
     std::vector<ParticleDef> particles;
     std::vector<BlockDef> blocks;
+    std::vector<HeapDef> heaps;  ///< generated after the blocks (ids follow theirs)
     std::vector<WallDef> walls;
     std::vector<SpringDef> springs;
     MachineDefs machines;  ///< drums, sources, inlets, outlets, boundaries, gravity schedule, changes
