@@ -71,16 +71,24 @@ inline void wallQuad(Vec2 a, Vec2 b, Vec2 from, Real thickness, WallQuad& q) noe
     q.frame.inradius = 0.5 * std::min(thickness, len);
 }
 
+/// Geometry of particle i (polygon or disk) against an immovable convex polygon `wall` (world
+/// corners counter-clockwise), normal pushing i away from the wall; pull and twist (the area
+/// gradient of i, for area_potential) as for a particle pair. With areaLaw (invL0 = 1/R_i) this
+/// gives the force and torque on i of either area law against any convex wall polygon.
+inline geom::AreaContact particleWallGeometry(const model::ParticleStore& s, ShapeContext& sc, std::uint32_t i,
+                                              const geom::PolygonFrame& wall, geom::FeatureCache& cache) noexcept {
+    if (s.shape[i] != model::kDiskShape)
+        return geom::trackPolygonContact(frameOf(s, sc, i), wall, cache, sc.featureStats);
+    return geom::circlePolygonContact({s.x[i], s.y[i]}, s.radius[i], wall.corners, wall.n);
+}
+
 /// Geometry of particle i against wall segment [a, b] (the plate behind it), normal pushing i
 /// away from the wall.
 inline geom::AreaContact wallGeometry(const model::ParticleStore& s, ShapeContext& sc, std::uint32_t i,
                                       Vec2 a, Vec2 b, geom::FeatureCache& cache) noexcept {
-    const Vec2 xi{s.x[i], s.y[i]};
     WallQuad quad;
-    wallQuad(a, b, xi, 2 * s.radius[i], quad);
-    if (s.shape[i] != model::kDiskShape)
-        return geom::trackPolygonContact(frameOf(s, sc, i), quad.frame, cache, sc.featureStats);
-    return geom::circlePolygonContact(xi, s.radius[i], quad.world, 4);
+    wallQuad(a, b, {s.x[i], s.y[i]}, 2 * s.radius[i], quad);
+    return particleWallGeometry(s, sc, i, quad.frame, cache);
 }
 
 /// Everything the gc2d law needs about one contact; j may be a wall (infinite mass).
