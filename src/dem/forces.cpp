@@ -77,7 +77,7 @@ void computeForces(model::ParticleStore& s, const model::WallSet& walls, Neighbo
                               using T = std::remove_pointer_t<decltype(tT)>;
                               if constexpr (kAreaForm<N, D, T>)
                                   detail::areaWalls<N, D, T>(s, walls, list.wallPairs, b, e, laws, drift, dt,
-                                                          trialHistory, stats, wallForce, shapes);
+                                                             trialHistory, stats, wallForce, shapes);
                               else if constexpr (kDepthForm<N, D, T>)
                                   detail::diskWalls<N, D, T>(s, walls, list.wallPairs, b, e, laws, drift, dt,
                                                              trialHistory, stats, wallForce);

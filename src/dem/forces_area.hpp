@@ -75,8 +75,9 @@ inline void wallQuad(Vec2 a, Vec2 b, Vec2 from, Real thickness, WallQuad& q) noe
 /// corners counter-clockwise), normal pushing i away from the wall; pull and twist (the area
 /// gradient of i, for area_potential) as for a particle pair. With areaLaw (invL0 = 1/R_i) this
 /// gives the force and torque on i of either area law against any convex wall polygon.
-inline geom::AreaContact particleWallGeometry(const model::ParticleStore& s, ShapeContext& sc, std::uint32_t i,
-                                              const geom::PolygonFrame& wall, geom::FeatureCache& cache) noexcept {
+inline geom::AreaContact particleWallGeometry(const model::ParticleStore& s, ShapeContext& sc,
+                                              std::uint32_t i, const geom::PolygonFrame& wall,
+                                              geom::FeatureCache& cache) noexcept {
     if (s.shape[i] != model::kDiskShape)
         return geom::trackPolygonContact(frameOf(s, sc, i), wall, cache, sc.featureStats);
     return geom::circlePolygonContact({s.x[i], s.y[i]}, s.radius[i], wall.corners, wall.n);
@@ -100,7 +101,8 @@ struct AreaPair {
     bool hasDrift = false;
     Real invMi = 0, invMj = 0;  ///< [1/kg] (0 for walls)
     Real invIi = 0, invIj = 0;  ///< [1/(kg m^2)]
-    Real invL0 = 0;  ///< [1/m] area_potential only: 1/l0 = (R_i + R_j)/(R_i R_j), bounding radii; 1/R_i at a wall
+    /// [1/m] area_potential only: 1/l0 = (R_i + R_j)/(R_i R_j) from the bounding radii; 1/R_i at a wall
+    Real invL0 = 0;
     bool wall = false;
 };
 
@@ -148,7 +150,7 @@ AreaForce areaLaw(const N& nl, const D& dl, const T& tl, const AreaPair& c, Real
         fcoh = nl.cohesion * pullN;
         slope = nl.slope(g.area, invL);
     } else {
-        fel = nl.E * hEff;                                                     // Eq. 2.20
+        fel = nl.E * hEff;                                               // Eq. 2.20
         fcoh = nl.cohesion > 0 ? nl.cohesion * norm(g.c2 - g.c1) : 0.0;  // Eq. 2.28
     }
     out.overlapDepth = hEff;

@@ -61,7 +61,8 @@ template <class N>
 constexpr bool kAreaNormal = std::is_same_v<N, AreaNormal> || std::is_same_v<N, AreaPotentialNormal>;
 /// True for the law forms of the overlap-depth kernels (disks only).
 template <class N, class D, class T>
-constexpr bool kDepthForm = !kAreaNormal<N> && !std::is_same_v<D, AreaDamping> && !std::is_same_v<T, AreaFriction>;
+constexpr bool kDepthForm =
+    !kAreaNormal<N> && !std::is_same_v<D, AreaDamping> && !std::is_same_v<T, AreaFriction>;
 /// True for the forms of the gc2d area kernel (validation rejects mixed forms).
 template <class N, class D, class T>
 constexpr bool kAreaForm = kAreaNormal<N>&& kAreaDamping<D>&& kAreaTangential<T>;

@@ -198,10 +198,10 @@ void adviseFaceTimeStep(const LawTable& laws, const InitialParticles& initial,
         const Real dt = kPi / 10.0 * std::sqrt(m / kFace);
         if (advice.faceAdvisedDt == 0 || dt < advice.faceAdvisedDt) {
             advice.faceAdvisedDt = dt;
-            advice.faceParticle =
-                kPotential > kGc2d
-                    ? fmt::format("particle {} (k_face = {:.3g} E, area_potential)", k, potentialRatio[p.shape])
-                    : fmt::format("particle {} (k_face = {:.3g} E)", k, faceRatio[p.shape]);
+            advice.faceParticle = kPotential > kGc2d
+                                      ? fmt::format("particle {} (k_face = {:.3g} E, area_potential)", k,
+                                                    potentialRatio[p.shape])
+                                      : fmt::format("particle {} (k_face = {:.3g} E)", k, faceRatio[p.shape]);
         }
     }
 }

@@ -44,7 +44,8 @@ struct Body {
 
 Body regular(int n, Real r, Vec2 x, Real phi) {
     Body b;
-    for (int k = 0; k < n; ++k) b.local.push_back({r * std::cos(2 * kPi * k / n), r * std::sin(2 * kPi * k / n)});
+    for (int k = 0; k < n; ++k)
+        b.local.push_back({r * std::cos(2 * kPi * k / n), r * std::sin(2 * kPi * k / n)});
     b.r = r;
     b.x = x;
     b.phi = phi;
@@ -182,13 +183,15 @@ TEST(AreaPotentialGradient, ForceAndTorqueAreMinusWPrimeTimesGradA) {
             const Real dist = depths[d] * 2 * R;
             cases.push_back({"square-square", regular(4, R, {0, 0}, pi), regular(4, R, u * dist, pj)});
             cases.push_back({"hexagon-hexagon", regular(6, R, {0, 0}, pi), regular(6, R, u * dist, pj)});
-            cases.push_back({"square-hexagon", regular(4, R, {0, 0}, pi), regular(6, 0.8 * R, u * (0.9 * dist), pj)});
+            cases.push_back(
+                {"square-hexagon", regular(4, R, {0, 0}, pi), regular(6, 0.8 * R, u * (0.9 * dist), pj)});
             cases.push_back({"disk-square", disk(0.7 * R, {0, 0}), regular(4, R, u * (0.85 * dist), pj)});
             cases.push_back({"hexagon-disk", regular(6, R, {0, 0}, pi), disk(0.6 * R, u * (0.8 * dist))});
             cases.push_back({"disk-disk", disk(R, {0, 0}), disk(0.5 * R, u * (0.75 * dist))});
         }
     // A square turned by 45 degrees over another, nearly concentric: eight crossings.
-    cases.push_back({"square-square deep", regular(4, R, {0, 0}, 0.02), regular(4, R, {0.1 * R, 0.05 * R}, kPi / 4)});
+    cases.push_back(
+        {"square-square deep", regular(4, R, {0, 0}, 0.02), regular(4, R, {0.1 * R, 0.05 * R}, kPi / 4)});
     Real worstF = 0, worstT = 0;
     int tested = 0;
     for (const auto& cs : cases) {
@@ -229,7 +232,8 @@ TEST(AreaPotentialGradient, WallForceAndTorqueAreMinusWPrimeTimesGradA) {
     for (const Real phi : {0.1, 0.4, 0.9, 1.3})
         for (const Real depth : {0.9, 0.6}) {
             for (const int corners : {0, 4, 6}) {
-                const Body i = corners ? regular(corners, R, {0.2 * R, depth * R}, phi) : disk(R, {0.2 * R, depth * R});
+                const Body i =
+                    corners ? regular(corners, R, {0.2 * R, depth * R}, phi) : disk(R, {0.2 * R, depth * R});
                 area::WallQuad q;
                 area::wallQuad(a, b, i.x, 2 * R, q);
                 const std::vector<Vec2> quad(q.world, q.world + 4);
@@ -255,8 +259,8 @@ TEST(AreaPotentialGradient, WallForceAndTorqueAreMinusWPrimeTimesGradA) {
                 c.invL0 = 1 / R;
                 c.invMi = 1;
                 Real xi = 0, aOld = 0;
-                const auto f = area::areaLaw(AreaPotentialNormal{E, 0}, NoDamping{}, NoFriction{}, c, 1e-6, 1e6,
-                                             xi, aOld);
+                const auto f = area::areaLaw(AreaPotentialNormal{E, 0}, NoDamping{}, NoFriction{}, c, 1e-6,
+                                             1e6, xi, aOld);
                 const Real slope = E * g.area / (R * R), h = 1e-6 * R;
                 const auto d = [&](auto move, Real s) {
                     Body p = i, m = i;
@@ -264,7 +268,8 @@ TEST(AreaPotentialGradient, WallForceAndTorqueAreMinusWPrimeTimesGradA) {
                     move(m, -s);
                     return -slope * (areaAt(p) - areaAt(m)) / (2 * s);
                 };
-                const Vec2 fd{d([](Body& p, Real s) { p.x.x += s; }, h), d([](Body& p, Real s) { p.x.y += s; }, h)};
+                const Vec2 fd{d([](Body& p, Real s) { p.x.x += s; }, h),
+                              d([](Body& p, Real s) { p.x.y += s; }, h)};
                 const Real td = d([](Body& p, Real s) { p.phi += s; }, h / R);
                 const Real scale = norm(f.onI);
                 EXPECT_LT(norm(f.onI - fd) / scale, 1e-6);
@@ -292,12 +297,14 @@ TEST(AreaPotentialGradient, FlatFaceWithChordL0FeelsTheGc2dForce) {
     c.invL0 = 1 / l0;
     c.invMi = c.invMj = 1;
     Real xi = 0, aOld = 0;
-    const auto f = area::areaLaw(AreaPotentialNormal{E, 0}, NoDamping{}, NoFriction{}, c, 1e-6, 1e6, xi, aOld);
+    const auto f =
+        area::areaLaw(AreaPotentialNormal{E, 0}, NoDamping{}, NoFriction{}, c, 1e-6, 1e6, xi, aOld);
     EXPECT_NEAR(f.onI.x, E * A / l0, 1e-12 * E * A / l0);
     EXPECT_EQ(f.onI.y, 0.0);
     EXPECT_EQ(f.couple, 0.0);
     // Cohesion: the potential -k_coh A pulls with k_coh L_c along -n.
-    const auto g = area::areaLaw(AreaPotentialNormal{E, 2e4}, NoDamping{}, NoFriction{}, c, 1e-6, 1e6, xi, aOld);
+    const auto g =
+        area::areaLaw(AreaPotentialNormal{E, 2e4}, NoDamping{}, NoFriction{}, c, 1e-6, 1e6, xi, aOld);
     EXPECT_NEAR(g.onI.x, E * A / l0 - 2e4 * l0, 1e-12 * E * A / l0);
 }
 
@@ -315,17 +322,17 @@ struct Shot {
 };
 
 struct Outcome {
-    Real energyEnd = 0;   ///< (E_after - E_before) / E_before, kinetic + rotational + elastic
-    Real energyMax = 0;   ///< largest |E(t) - E_before| / E_before at any step, contact included
-    Real momentum = 0;    ///< |P_after - P_before| / (m u)
-    Real angular = 0;     ///< largest |L(t) - L_before| / (m u R)
-    Real spin = 0;        ///< largest |omega| R / u after the collision
-    int contactSteps = 0; ///< steps with a contact
+    Real energyEnd = 0;    ///< (E_after - E_before) / E_before, kinetic + rotational + elastic
+    Real energyMax = 0;    ///< largest |E(t) - E_before| / E_before at any step, contact included
+    Real momentum = 0;     ///< |P_after - P_before| / (m u)
+    Real angular = 0;      ///< largest |L(t) - L_before| / (m u R)
+    Real spin = 0;         ///< largest |omega| R / u after the collision
+    int contactSteps = 0;  ///< steps with a contact
 };
 
 std::string shapeRow(const char* name, int corners) {
-    return fmt::format("[[shape]]\nname = \"{}\"\nkind = \"regular\"\ncorner_count = {}\nradius = {:.17g}\n", name,
-                       corners, kR);
+    return fmt::format("[[shape]]\nname = \"{}\"\nkind = \"regular\"\ncorner_count = {}\nradius = {:.17g}\n",
+                       name, corners, kR);
 }
 
 std::string bodyRow(int corners, Vec2 x, Vec2 v, Real phi) {
@@ -386,7 +393,8 @@ tangential = "none"
     const auto angular = [&] {
         Real l = 0;
         for (std::size_t k = 0; k < s.size(); ++k)
-            l += s.mass[k] * cross(Vec2{s.x[k], s.y[k]}, Vec2{s.vx[k], s.vy[k]}) + s.omega[k] / s.invInertia[k];
+            l += s.mass[k] * cross(Vec2{s.x[k], s.y[k]}, Vec2{s.vx[k], s.vy[k]}) +
+                 s.omega[k] / s.invInertia[k];
         return l;
     };
     const Real e0 = energy(), l0 = angular();
@@ -434,17 +442,19 @@ TEST(AreaPotentialCollision, ObliqueCollisionsConserveEnergyAndMomenta) {
     const Real angles[][2] = {{0.1, 0.5}, {0.4, -0.3}, {1.0, 0.2}};
     Real worst = 0, worstDuring = 0, worstP = 0, worstL = 0, gcMin = 0, gcMax = 0;
     int minSteps = 1 << 30;
-    std::printf("pair             b/r   angles      steps  dE/E area_potential (max during)   dE/E gc2d area\n");
+    std::printf(
+        "pair             b/r   angles      steps  dE/E area_potential (max during)   dE/E gc2d area\n");
     for (const auto& pr : pairs)
         for (const Real b : bs)
             for (const auto& an : angles) {
                 const Shot shot{pr[0], pr[1], b, an[0], an[1]};
-                SCOPED_TRACE(fmt::format("{}-{} b/r {} angles {} {}", nameOf(pr[0]), nameOf(pr[1]), b, an[0], an[1]));
+                SCOPED_TRACE(
+                    fmt::format("{}-{} b/r {} angles {} {}", nameOf(pr[0]), nameOf(pr[1]), b, an[0], an[1]));
                 const Outcome pot = collide(shot, "area_potential", dt);
                 const Outcome gc = collide(shot, "area", dt);
-                std::printf("%-7s-%-8s %.2f  %+.1f %+.1f  %5d  %+.2e (%.2e)              %+.3e\n", nameOf(pr[0]),
-                            nameOf(pr[1]), b, an[0], an[1], pot.contactSteps, pot.energyEnd, pot.energyMax,
-                            gc.energyEnd);
+                std::printf("%-7s-%-8s %.2f  %+.1f %+.1f  %5d  %+.2e (%.2e)              %+.3e\n",
+                            nameOf(pr[0]), nameOf(pr[1]), b, an[0], an[1], pot.contactSteps, pot.energyEnd,
+                            pot.energyMax, gc.energyEnd);
                 EXPECT_GE(pot.contactSteps, 100);
                 EXPECT_LT(std::abs(pot.energyEnd), 1e-4);
                 EXPECT_LT(pot.energyMax, 1e-4);
@@ -467,7 +477,8 @@ TEST(AreaPotentialCollision, ObliqueCollisionsConserveEnergyAndMomenta) {
                 }
             }
     std::printf(
-        "area_potential: worst |dE/E| after %.2e, during %.2e; dP/(m u) %.1e, dL/(m u R) %.1e; >= %d steps per "
+        "area_potential: worst |dE/E| after %.2e, during %.2e; dP/(m u) %.1e, dL/(m u R) %.1e; >= %d steps "
+        "per "
         "contact\ngc2d area law on the same polygon collisions: dE/E from %+.3e to %+.3e\n",
         worst, worstDuring, worstP, worstL, minSteps, gcMin, gcMax);
     // The gc2d law's generalised force is not a gradient: its energy change on the same
@@ -482,8 +493,10 @@ TEST(AreaPotentialCollision, ObliqueWallImpactIsElastic) {
             SCOPED_TRACE(fmt::format("{} at angle {}", nameOf(corners), phi));
             const Outcome pot = collide({corners, 0, 0, phi, 0}, "area_potential", dt, true);
             const Outcome gc = collide({corners, 0, 0, phi, 0}, "area", dt, true);
-            std::printf("%-8s angle %.1f on a wall: steps %d  dE/E area_potential %+.2e (max during %.2e), gc2d %+.3e\n",
-                        nameOf(corners), phi, pot.contactSteps, pot.energyEnd, pot.energyMax, gc.energyEnd);
+            std::printf(
+                "%-8s angle %.1f on a wall: steps %d  dE/E area_potential %+.2e (max during %.2e), gc2d "
+                "%+.3e\n",
+                nameOf(corners), phi, pot.contactSteps, pot.energyEnd, pot.energyMax, gc.energyEnd);
             EXPECT_GE(pot.contactSteps, 100);
             EXPECT_LT(std::abs(pot.energyEnd), 1e-4);
             EXPECT_LT(pot.energyMax, 1e-4);
