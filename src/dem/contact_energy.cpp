@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Elastic energy stored in the contacts, for the energy balance (no side effects): the springs of
 // the depth laws (cfddem spec section 3) and, for the gc2d area law (gc2d spec section 3.2), the
-// estimate F_n h_eff / 2 plus the tangential spring.
+// estimate F_n h_eff / 2 plus the tangential spring; for area_potential the exact potential
+// E A^2/(2 l0^2) - k_coh A (Feng, Han & Owen 2012).
 #include <cmath>
 #include <type_traits>
 
@@ -18,10 +19,12 @@ namespace {
 using detail::kAreaForm;
 using detail::kDepthForm;
 
-/// Energy of the area contacts of one bucket: F_n h_eff / 2 + k_t xi^2 / 2.
-template <class T>
+/// Energy of the area contacts of one bucket: for the gc2d law the estimate F_n h_eff / 2, for
+/// area_potential the exact potential E A^2/(2 l0^2) - k_coh A; plus k_t xi^2 / 2.
+template <class N, class T>
 Real areaEnergy(const model::ParticleStore& s, const model::WallSet& walls, const ContactList& cl,
                 std::uint32_t b, std::uint32_t e, const LawTable& laws, bool wall, ShapeContext& sc) {
+    constexpr bool kPotential = std::is_same_v<N, AreaPotentialNormal>;
     Real energy = 0;
     const std::uint32_t nm = laws.materialCount();
     for (std::uint32_t p = b; p < e; ++p) {
@@ -34,8 +37,8 @@ Real areaEnergy(const model::ParticleStore& s, const model::WallSet& walls, cons
             const auto& seg = walls.segments[cl.second[p]];
             g = area::wallGeometry(s, sc, walls, i, cl.second[p], cache);
             otherMat = seg.material;
-            l = norm(g.point - Vec2{s.x[i], s.y[i]});
-            if (walls.walls[seg.wall].body) {  // r_j from the body's centroid, as in the force
+            l = kPotential ? s.radius[i] : norm(g.point - Vec2{s.x[i], s.y[i]});
+            if (!kPotential && walls.walls[seg.wall].body) {  // r_j from the body's centroid, as in the force
                 const Real rj = norm(g.point - walls.bodyCentroid[seg.wall]);
                 l = l + rj > 0 ? l * rj / (l + rj) : 0;
             }
@@ -43,14 +46,19 @@ Real areaEnergy(const model::ParticleStore& s, const model::WallSet& walls, cons
             const std::uint32_t j = cl.second[p];
             g = area::pairGeometry(s, sc, i, j, cache);
             otherMat = s.material[j];
-            const Real ri = norm(g.point - Vec2{s.x[i], s.y[i]}), rj = norm(g.point - Vec2{s.x[j], s.y[j]});
+            const Real ri = kPotential ? s.radius[i] : norm(g.point - Vec2{s.x[i], s.y[i]});
+            const Real rj = kPotential ? s.radius[j] : norm(g.point - Vec2{s.x[j], s.y[j]});
             l = ri + rj > 0 ? ri * rj / (ri + rj) : 0;
         }
         if (!g.touching || !(l > 0)) continue;
         const ContactLaw& law = laws.laws()[static_cast<std::size_t>(s.material[i]) * nm + otherMat];
-        const AreaNormal& nl = *std::get_if<AreaNormal>(&law.normal);
-        const Real h = g.area / l;
-        energy += 0.5 * nl.E * h * h;
+        const N& nl = *std::get_if<N>(&law.normal);
+        if constexpr (kPotential) {
+            energy += nl.potential(g.area, 1.0 / l);
+        } else {
+            const Real h = g.area / l;
+            energy += 0.5 * nl.E * h * h;
+        }
         if constexpr (std::is_same_v<T, AreaFriction>) {
             const Real kt = std::get_if<AreaFriction>(&law.tangential)->kt;
             energy += 0.5 * kt * cl.xi[p] * cl.xi[p];
@@ -74,7 +82,7 @@ Real contactEnergy(const model::ParticleStore& s, const model::WallSet& walls, c
             using D = std::remove_pointer_t<decltype(dT)>;
             using T = std::remove_pointer_t<decltype(tT)>;
             if constexpr (kAreaForm<N, D, T>) {
-                energy += areaEnergy<T>(s, walls, cl, b, e, laws, wall, sc);
+                energy += areaEnergy<N, T>(s, walls, cl, b, e, laws, wall, sc);
             } else if constexpr (kDepthForm<N, D, T>) {
                 for (std::uint32_t p = b; p < e; ++p) {
                     const std::uint32_t i = cl.first[p];

@@ -60,7 +60,7 @@ void computeForces(model::ParticleStore& s, const model::WallSet& walls, Neighbo
             using D = std::remove_pointer_t<decltype(dT)>;
             using T = std::remove_pointer_t<decltype(tT)>;
             if constexpr (kAreaForm<N, D, T>) {
-                detail::areaPairs<D, T>(s, list.pairs, b, e, laws, drift, dt, trialHistory, stats, shapes);
+                detail::areaPairs<N, D, T>(s, list.pairs, b, e, laws, drift, dt, trialHistory, stats, shapes);
             } else if constexpr (kDepthForm<N, D, T>) {
                 if (laws.hasRolling())
                     detail::diskPairs<N, D, T, true>(s, list.pairs, b, e, laws, drift, dt, body.overlapGuard,
@@ -76,8 +76,8 @@ void computeForces(model::ParticleStore& s, const model::WallSet& walls, Neighbo
                               using D = std::remove_pointer_t<decltype(dT)>;
                               using T = std::remove_pointer_t<decltype(tT)>;
                               if constexpr (kAreaForm<N, D, T>)
-                                  detail::areaWalls<D, T>(s, walls, list.wallPairs, b, e, laws, drift, dt,
-                                                          trialHistory, stats, wallForce, shapes);
+                                  detail::areaWalls<N, D, T>(s, walls, list.wallPairs, b, e, laws, drift, dt,
+                                                             trialHistory, stats, wallForce, shapes);
                               else if constexpr (kDepthForm<N, D, T>)
                                   detail::diskWalls<N, D, T>(s, walls, list.wallPairs, b, e, laws, drift, dt,
                                                              trialHistory, stats, wallForce);

@@ -2,7 +2,8 @@
 // Force kernel of the gc2d overlap-area contact model (gc2d spec section 3, Eq. 2.15-2.29 with
 // errata 1-5 of section 12) for every shape pair: polygon-polygon (tracked crossings),
 // disk-polygon, disk-disk (lens) and particle-wall (a wall segment acts as an immovable convex
-// quadrilateral of thickness 2 r behind the segment, on the side away from the particle).
+// quadrilateral of thickness 2 r behind the segment, on the side away from the particle); also the
+// energy-conserving area_potential law (Feng, Han & Owen 2012) through the same kernel.
 // Included by dem/forces_area_pairs.hpp (the kernels of one bucket) and dem/contact_energy.cpp;
 // D and T are the damping and tangential alternatives of the bucket.
 #pragma once
@@ -47,6 +48,8 @@ inline geom::AreaContact pairGeometry(const model::ParticleStore& s, ShapeContex
     geom::AreaContact g = geom::circlePolygonContact(cj, s.radius[j], f.corners, f.n);
     g.normal = -g.normal;  // computed for the disk j
     std::swap(g.c1, g.c2);
+    g.pull = -g.pull;  // the closed overlap boundary: sum of n L and its moment vanish
+    g.twist = -g.twist;
     return g;
 }
 
@@ -68,6 +71,17 @@ inline void wallQuad(Vec2 a, Vec2 b, Vec2 from, Real thickness, WallQuad& q) noe
     q.frame.inradius = 0.5 * std::min(thickness, len);
 }
 
+/// Geometry of particle i (polygon or disk) against an immovable convex polygon `wall` (world
+/// corners counter-clockwise), normal pushing i away from the wall; pull and twist (the area
+/// gradient of i, for area_potential) as for a particle pair.
+inline geom::AreaContact particleWallGeometry(const model::ParticleStore& s, ShapeContext& sc,
+                                              std::uint32_t i, const geom::PolygonFrame& wall,
+                                              geom::FeatureCache& cache) noexcept {
+    if (s.shape[i] != model::kDiskShape)
+        return geom::trackPolygonContact(frameOf(s, sc, i), wall, cache, sc.featureStats);
+    return geom::circlePolygonContact({s.x[i], s.y[i]}, s.radius[i], wall.corners, wall.n);
+}
+
 /// Geometry of particle i against the wall of segment `segIndex`, normal pushing i away from the
 /// wall: a convex body wall is one immovable polygon (gc2d spec 3.7, one contact per grain); a
 /// polyline segment acts as the plate of thickness 2 r behind it. Not touching for a wall that is
@@ -78,23 +92,17 @@ inline geom::AreaContact wallGeometry(const model::ParticleStore& s, ShapeContex
     const auto& seg = walls.segments[segIndex];
     const model::Wall& wall = walls.walls[seg.wall];
     if (!wall.solid) return {};
-    const Vec2 xi{s.x[i], s.y[i]};
-    const bool polygon = s.shape[i] != model::kDiskShape;
     if (wall.body) {
-        const Vec2* corners = walls.corners.data() + wall.firstSegment;
-        const int n = static_cast<int>(wall.segmentCount);
-        if (!polygon) return geom::circlePolygonContact(xi, s.radius[i], corners, n);
         geom::PolygonFrame body;
-        body.corners = corners;
-        body.n = n;
+        body.corners = walls.corners.data() + wall.firstSegment;
+        body.n = static_cast<int>(wall.segmentCount);
         body.centre = walls.bodyCentroid[seg.wall];
         body.inradius = walls.bodyInradius[seg.wall];
-        return geom::trackPolygonContact(frameOf(s, sc, i), body, cache, sc.featureStats);
+        return particleWallGeometry(s, sc, i, body, cache);
     }
     WallQuad quad;
-    wallQuad(seg.a, seg.b, xi, 2 * s.radius[i], quad);
-    if (polygon) return geom::trackPolygonContact(frameOf(s, sc, i), quad.frame, cache, sc.featureStats);
-    return geom::circlePolygonContact(xi, s.radius[i], quad.world, 4);
+    wallQuad(seg.a, seg.b, {s.x[i], s.y[i]}, 2 * s.radius[i], quad);
+    return particleWallGeometry(s, sc, i, quad.frame, cache);
 }
 
 /// Everything the gc2d law needs about one contact; j may be a wall (infinite mass).
@@ -106,46 +114,65 @@ struct AreaPair {
     bool hasDrift = false;
     Real invMi = 0, invMj = 0;  ///< [1/kg] (0 for walls)
     Real invIi = 0, invIj = 0;  ///< [1/(kg m^2)]
+    /// [1/m] area_potential only: 1/l0 = (R_i + R_j)/(R_i R_j) from the bounding radii; 1/R_i at a wall
+    Real invL0 = 0;
     bool wall = false;
     bool wallBody = false;  ///< a convex body wall: rj is the arm from the wall's centroid
 };
 
 struct AreaForce {
-    Vec2 onI;           ///< [N] force on i (on j: the opposite)
+    Vec2 onI;           ///< [N] force on i at the contact point s (on j: the opposite)
     Real overlapDepth;  ///< [m] h_eff = A / l
+    Real couple = 0;    ///< [N m] area_potential: torque on i about s besides r_i x onI (on j: -couple)
 };
 
+/// 1/l0 [1/m] of the energy-conserving law for bounding radii R_i, R_j [m] (l0 = R_i R_j/(R_i + R_j)).
+inline Real potentialInvL0(Real boundI, Real boundJ) noexcept {
+    return (boundI + boundJ) / (boundI * boundJ);
+}
+
 /// gc2d Eq. 2.20-2.29 for one contact; updates the spring xi [m] and the old area [m^2].
-/// `invDt` = 1/dt [1/s]; `dt` [s].
-template <class D, class T>
-AreaForce areaLaw(const AreaNormal& nl, const D& dl, const T& tl, const AreaPair& c, Real dt, Real invDt,
-                  Real& ioXi, Real& ioAreaOld) noexcept {
+/// `invDt` = 1/dt [1/s]; `dt` [s]. N is AreaNormal (F_el = E A / l along n) or AreaPotentialNormal
+/// (the exact force of W(A) = E A^2/(2 l0^2) - k_coh A: (dU/dA) pull at s plus the couple
+/// (dU/dA) twist; damping and friction as gc2d's with l = l0 and F_el = W'(A) pull . n).
+template <class N, class D, class T>
+AreaForce areaLaw(const N& nl, const D& dl, const T& tl, const AreaPair& c, Real dt, Real invDt, Real& ioXi,
+                  Real& ioAreaOld) noexcept {
+    constexpr bool kPotential = std::is_same_v<N, AreaPotentialNormal>;
     const auto& g = c.g;
-    const Real ri = norm(c.ri);
-    // 1/l with l = r_i r_j/(r_i + r_j) (Eq. 2.15); a wall's lever arm is infinite (spec 3.7): l = r_i.
     Real invL;
-    if (c.wall && !c.wallBody) {  // a polyline plate: infinitely long, l = r_i
-        invL = 1.0 / ri;
-    } else {  // grains, and a body wall with r_j = |s - x_wall| (spec 3.7, the faithful choice)
-        const Real rj = norm(c.rj);
+    if constexpr (kPotential) {
+        invL = c.invL0;  // a constant of the pair: the force is a gradient
+    } else if (c.wall && !c.wallBody) {  // a polyline plate: infinitely long, l = r_i (spec 3.7)
+        invL = 1.0 / norm(c.ri);
+    } else {  // 1/l, l = r_i r_j/(r_i + r_j) (Eq. 2.15); a body wall's r_j = |s - x_wall| (spec 3.7)
+        const Real ri = norm(c.ri), rj = norm(c.rj);
         invL = (ri + rj) / (ri * rj);
     }
     AreaForce out{{0, 0}, 0};
     if (!(invL > 0) || !std::isfinite(invL)) return out;
     const Real hEff = g.area * invL;  // effective penetration depth A / l [m]
-    const Real fel = nl.E * hEff;     // Eq. 2.20
+    const Vec2 n = g.normal, t = perp(n);
+    Real fel, fcoh, slope = 0;  // [N], [N], dU/dA [N/m]
+    if constexpr (kPotential) {
+        const Real pullN = dot(g.pull, n);  // = L_c for two crossings
+        fel = nl.E * hEff * invL * pullN;   // W'(A) pull . n
+        fcoh = nl.cohesion * pullN;
+        slope = nl.slope(g.area, invL);
+    } else {
+        fel = nl.E * hEff;                                               // Eq. 2.20
+        fcoh = nl.cohesion > 0 ? nl.cohesion * norm(g.c2 - g.c1) : 0.0;  // Eq. 2.28
+    }
     out.overlapDepth = hEff;
-    Real fn = fel;
+    Real fn = fel, damp = 0;
     if constexpr (std::is_same_v<D, AreaDamping>) {    // Eq. 2.21/2.22, erratum 1
         const Real mperp = 1.0 / (c.invMi + c.invMj);  // reduced mass; m_i at a wall
         const Real dA = g.area - ioAreaOld;
-        Real damp = dl.gamma * std::sqrt(nl.E * mperp) * dA * invL * invDt;
+        damp = dl.gamma * std::sqrt(nl.E * mperp) * dA * invL * invDt;
         if (dA < 0) damp = std::max(damp, -fel);  // separating: never attractive
         fn += damp;
     }
     ioAreaOld = g.area;
-    const Real fcoh = nl.cohesion > 0 ? nl.cohesion * norm(g.c2 - g.c1) : 0.0;  // Eq. 2.28
-    const Vec2 n = g.normal, t = perp(n);
     Real fpar = 0;
     if constexpr (std::is_same_v<T, AreaFriction>) {  // Eq. 2.23-2.27, errata 2-4
         const Real vpar = dot(c.vi - c.vj, t);
@@ -164,7 +191,12 @@ AreaForce areaLaw(const AreaNormal& nl, const D& dl, const T& tl, const AreaPair
         fpar = trial >= 0 ? std::min(trial, cap) : -std::min(-trial, cap);
         if (std::abs(spring) > cap) ioXi = (ioXi >= 0 ? cap : -cap) / tl.kt;  // the spring slides along
     }
-    out.onI = n * (fn - fcoh) - t * fpar;  // Eq. 2.29
+    if constexpr (kPotential) {
+        out.onI = g.pull * slope + n * damp - t * fpar;  // -dU/dx_i, damping, friction
+        out.couple = slope * g.twist;                    // -dU/dtheta_i - r_i x (-dU/dx_i)
+    } else {
+        out.onI = n * (fn - fcoh) - t * fpar;  // Eq. 2.29
+    }
     return out;
 }
 

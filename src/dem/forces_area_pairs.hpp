@@ -5,6 +5,7 @@
 #pragma once
 #include <algorithm>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #include "core/error.hpp"
@@ -28,8 +29,8 @@ inline void assertAreaBucket([[maybe_unused]] const ContactList& list, [[maybe_u
     GL_ASSERT(!trialHistory || list.xiTrial.size() == list.size(), "trial springs allocated");
 }
 
-/// gc2d area contacts of one bucket of particle pairs (any shapes).
-template <class D, class T>
+/// gc2d area contacts of one bucket of particle pairs (any shapes); N: AreaNormal or AreaPotentialNormal.
+template <class N, class D, class T>
 void areaPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, std::uint32_t end,
                const LawTable& laws, const DriftVelocities& drift, Real dt, bool trialHistory,
                ForceStats& stats, ShapeContext& sc) noexcept {
@@ -70,16 +71,23 @@ void areaPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
             c.invMj = s.invMass[j];
             c.invIi = s.invInertia[i];
             c.invIj = s.invInertia[j];
+            if constexpr (std::is_same_v<N, AreaPotentialNormal>)
+                c.invL0 = area::potentialInvL0(s.radius[i], s.radius[j]);
             const ContactLaw& law = table[static_cast<std::size_t>(s.material[i]) * nm + s.material[j]];
             const area::AreaForce f =
-                area::areaLaw(*std::get_if<AreaNormal>(&law.normal), *std::get_if<D>(&law.damping),
+                area::areaLaw(*std::get_if<N>(&law.normal), *std::get_if<D>(&law.damping),
                               *std::get_if<T>(&law.tangential), c, dt, invDt, xiHist[q.p], areaHist[q.p]);
             s.fx[i] += f.onI.x;
             s.fy[i] += f.onI.y;
             s.fx[j] -= f.onI.x;
             s.fy[j] -= f.onI.y;
-            s.torque[i] += cross(c.ri, f.onI);
-            s.torque[j] -= cross(c.rj, f.onI);
+            if constexpr (std::is_same_v<N, AreaPotentialNormal>) {
+                s.torque[i] += cross(c.ri, f.onI) + f.couple;
+                s.torque[j] -= cross(c.rj, f.onI) + f.couple;
+            } else {
+                s.torque[i] += cross(c.ri, f.onI);
+                s.torque[j] -= cross(c.rj, f.onI);
+            }
             const Real rMin = std::min(s.radius[i], s.radius[j]);
             if (f.overlapDepth > maxRel * rMin)
                 maxRel = f.overlapDepth / rMin;  // divide only for a new maximum
@@ -113,8 +121,8 @@ void areaPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
     stats.maxRelativeOverlap = maxRel;
 }
 
-/// gc2d area contacts of particles with wall segments.
-template <class D, class T>
+/// gc2d area contacts of particles with wall segments (the wall: an immovable body).
+template <class N, class D, class T>
 void areaWalls(model::ParticleStore& s, const model::WallSet& walls, ContactList& list, std::uint32_t begin,
                std::uint32_t end, const LawTable& laws, const DriftVelocities& drift, Real dt,
                bool trialHistory, ForceStats& stats, std::vector<Vec2>& wallForce,
@@ -158,13 +166,14 @@ void areaWalls(model::ParticleStore& s, const model::WallSet& walls, ContactList
         }
         c.invMi = s.invMass[i];
         c.invIi = s.invInertia[i];
+        c.invL0 = 1.0 / s.radius[i];  // area_potential: l0 = R_i (read by that law only)
         const ContactLaw& law = table[static_cast<std::size_t>(s.material[i]) * nm + seg.material];
         const area::AreaForce f =
-            area::areaLaw(*std::get_if<AreaNormal>(&law.normal), *std::get_if<D>(&law.damping),
+            area::areaLaw(*std::get_if<N>(&law.normal), *std::get_if<D>(&law.damping),
                           *std::get_if<T>(&law.tangential), c, dt, 1.0 / dt, xiHist[p], areaHist[p]);
         s.fx[i] += f.onI.x;
         s.fy[i] += f.onI.y;
-        s.torque[i] += cross(c.ri, f.onI);
+        s.torque[i] += cross(c.ri, f.onI) + f.couple;  // couple: 0 but for area_potential
         wallForce[seg.wall] -= f.onI;
         stats.maxRelativeOverlap = std::max(stats.maxRelativeOverlap, f.overlapDepth / s.radius[i]);
     }

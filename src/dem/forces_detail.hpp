@@ -57,13 +57,16 @@ template <class D>
 constexpr bool kAreaDamping = std::is_same_v<D, NoDamping> || std::is_same_v<D, AreaDamping>;
 template <class T>
 constexpr bool kAreaTangential = std::is_same_v<T, NoFriction> || std::is_same_v<T, AreaFriction>;
+/// True for the normal laws of the area kernel: gc2d's E A / l and the energy-conserving potential.
+template <class N>
+constexpr bool kAreaNormal = std::is_same_v<N, AreaNormal> || std::is_same_v<N, AreaPotentialNormal>;
 /// True for the law forms of the overlap-depth kernels (disks only).
 template <class N, class D, class T>
 constexpr bool kDepthForm =
-    !std::is_same_v<N, AreaNormal> && !std::is_same_v<D, AreaDamping> && !std::is_same_v<T, AreaFriction>;
+    !kAreaNormal<N> && !std::is_same_v<D, AreaDamping> && !std::is_same_v<T, AreaFriction>;
 /// True for the forms of the gc2d area kernel (validation rejects mixed forms).
 template <class N, class D, class T>
-constexpr bool kAreaForm = std::is_same_v<N, AreaNormal>&& kAreaDamping<D>&& kAreaTangential<T>;
+constexpr bool kAreaForm = kAreaNormal<N>&& kAreaDamping<D>&& kAreaTangential<T>;
 
 /// Tangential displacement [m] of the contact points of the disks i and j during the step, from
 /// the drift velocities; n points from i to j.

@@ -25,7 +25,7 @@ void LawTable::finalize() {
     m_hasArea = false;
     for (const auto& l : m_laws) {
         m_hasRolling = m_hasRolling || rollingSettings(l.rolling).enabled;
-        m_hasArea = m_hasArea || std::holds_alternative<AreaNormal>(l.normal);
+        m_hasArea = m_hasArea || areaModulus(l.normal) != nullptr;
     }
     std::vector<std::array<std::size_t, 3>> signatures;
     for (std::size_t k = 0; k < m_laws.size(); ++k) {

@@ -124,12 +124,12 @@ TimeStepAdvice adviseTimeStep(const LawTable& laws, const std::vector<std::strin
     const auto consider = [&](std::uint32_t a, std::uint32_t b, Real meff, Real reff,
                               const std::string& label) {
         if (!laws.has(a, b) || !(meff > 0)) return;
-        if (const auto* area = std::get_if<AreaNormal>(&laws.law(a, b).normal)) {
+        if (const Real* areaE = areaModulus(laws.law(a, b).normal)) {
             // gc2d Eq. 2.9: about ten steps per harmonic half period, m the lighter body. Called
             // with the reduced mass for pairs: the lighter body is at most 2 meff.
             const bool pair = label.find("wall(") == std::string::npos;
             const Real m = pair ? std::min(minMass[a], minMass[b]) : meff;
-            const Real dt = kPi / 10.0 * std::sqrt(m / area->E);
+            const Real dt = kPi / 10.0 * std::sqrt(m / *areaE);
             if (advice.areaAdvisedDt == 0 || dt < advice.areaAdvisedDt) {
                 advice.areaAdvisedDt = dt;
                 advice.areaPair = label;
@@ -162,32 +162,47 @@ TimeStepAdvice adviseTimeStep(const LawTable& laws, const std::vector<std::strin
 void adviseFaceTimeStep(const LawTable& laws, const InitialParticles& initial,
                         const std::vector<Real>& density, TimeStepAdvice& advice) {
     const auto n = laws.materialCount();
-    std::vector<Real> stiffest(n, 0);  // largest area-law E [N/m] any contact of material m can have
+    // Largest modulus E [N/m] any contact of material m can have, gc2d law and energy-conserving law.
+    std::vector<Real> stiffest(n, 0), stiffestPotential(n, 0);
     for (std::uint32_t a = 0; a < n; ++a)
         for (std::uint32_t b = 0; b < n; ++b)
-            if (laws.has(a, b))
-                if (const auto* area = std::get_if<AreaNormal>(&laws.law(a, b).normal))
+            if (laws.has(a, b)) {
+                const NormalLaw& normal = laws.law(a, b).normal;
+                if (const auto* area = std::get_if<AreaNormal>(&normal))
                     stiffest[a] = std::max(stiffest[a], area->E);
+                if (const auto* pot = std::get_if<AreaPotentialNormal>(&normal))
+                    stiffestPotential[a] = std::max(stiffestPotential[a], pot->E);
+            }
     const auto& pool = initial.shapes;
-    std::vector<Real> faceRatio(pool.size(), 1);  // k_face / E per shape
+    std::vector<Real> faceRatio(pool.size(), 1);       // k_face / E per shape, gc2d law
+    std::vector<Real> potentialRatio(pool.size(), 1);  // k_face / E per shape, area_potential
     for (std::uint32_t k = 0; k < pool.size(); ++k) {
         Real edge = 0;  // longest edge [m]: the longest possible face contact
         const auto first = pool.start[k], count = pool.count[k];
         for (std::uint32_t c = 0; c < count; ++c)
             edge = std::max(edge, norm(pool.corners[first + (c + 1) % count] - pool.corners[first + c]));
+        const Real bound = pool.circumradius[k];  // [m] the store's radius of the shape
         if (pool.inradius[k] > 0)
             faceRatio[k] = std::max<Real>(1, 2 * edge / pool.inradius[k]);  // round: the gc2d rule
+        // W = E A^2/(2 l0^2): a face of length L has k = E (L / l0)^2, and l0 >= R/2 for a partner
+        // at least as large (smaller partners have their own, lighter bound).
+        if (bound > 0) potentialRatio[k] = std::max<Real>(1, 4 * edge * edge / (bound * bound));
     }
     for (std::size_t k = 0; k < initial.particles.size(); ++k) {
         const auto& p = initial.particles[k];
-        if (p.shape == model::kDiskShape || !(stiffest[p.material] > 0) || !(pool.inradius[p.shape] > 0))
-            continue;
+        if (p.shape == model::kDiskShape || !(pool.inradius[p.shape] > 0)) continue;
+        const Real kGc2d = stiffest[p.material] * faceRatio[p.shape];
+        const Real kPotential = stiffestPotential[p.material] * potentialRatio[p.shape];
+        const Real kFace = std::max(kGc2d, kPotential);
+        if (!(kFace > 0)) continue;
         const Real m = density[p.material] * pool.area[p.shape];
-        const Real ratio = faceRatio[p.shape];
-        const Real dt = kPi / 10.0 * std::sqrt(m / (stiffest[p.material] * ratio));
+        const Real dt = kPi / 10.0 * std::sqrt(m / kFace);
         if (advice.faceAdvisedDt == 0 || dt < advice.faceAdvisedDt) {
             advice.faceAdvisedDt = dt;
-            advice.faceParticle = fmt::format("particle {} (k_face = {:.3g} E)", k, ratio);
+            advice.faceParticle = kPotential > kGc2d
+                                      ? fmt::format("particle {} (k_face = {:.3g} E, area_potential)", k,
+                                                    potentialRatio[p.shape])
+                                      : fmt::format("particle {} (k_face = {:.3g} E)", k, faceRatio[p.shape]);
         }
     }
 }

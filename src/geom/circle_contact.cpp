@@ -104,6 +104,7 @@ AreaContact circleCircleContact(Vec2 ci, Real ri, Vec2 cj, Real rj) noexcept {
     const Vec2 t = perp(out.normal) * h;
     out.c1 = mid - t;
     out.c2 = mid + t;
+    out.pull = out.normal * (2 * h);  // i's arc inside j: -dA/dci = L_c n, through ci (no twist)
     finish(out);
     return out;
 }
@@ -301,6 +302,9 @@ AreaContact circlePolygonContact(Vec2 centre, Real r, const Vec2* corners, int n
     if (dot(nrm, towards) < 0) nrm = -nrm;
     out.normal = nrm;
     finish(out);
+    // The disk's arcs carry -dA/d(centre) = G, each through the centre (radial normals).
+    out.pull = grad;
+    out.twist = cross(centre - out.point, grad);
     return out;
 }
 

@@ -16,6 +16,9 @@
 
 namespace granulab::geom {
 
+/// Both fill AreaContact::pull and twist (the exact area gradient of the disk): the lens L_c n,
+/// the disk-polygon G below with its moment about the contact point; 0 under containment.
+
 /// Lens contact of disk i (centre ci [m], radius ri [m]) with disk j (cj, rj).
 /// Partial overlap: c1, c2 = the two circle intersection points, normal = (ci - cj)/|ci - cj|.
 /// One disk inside the other: area = pi r_min^2, c1 = c2 = point = the point of the smaller

@@ -130,6 +130,9 @@ AreaContact chainContact(const PolygonFrame& A, const PolygonFrame& B, int a1, i
         const Real dn = norm(d);
         c.normal = dn > 0 ? d / dn : Vec2{1, 0};
     }
+    // A's chain c1 -> c2 carries -dA/dx_A = sum of perp(edge) = perp(c2 - c1); its moment about
+    // the midpoint s telescopes to (|c2 - s|^2 - |c1 - s|^2)/2 = 0.
+    c.pull = perp(line);
     return c;
 }
 
@@ -146,6 +149,8 @@ AreaContact clipContact(const PolygonFrame& A, const PolygonFrame& B) {
     c.c2 = o.c2;
     c.point = o.point;
     c.normal = o.normal;
+    c.pull = o.pull;
+    c.twist = o.twist;
     return c;
 }
 

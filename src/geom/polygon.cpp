@@ -124,6 +124,14 @@ PolygonOverlap convexOverlap(const Vec2* pi, int ni, const Vec2* pj, int nj, Cli
         out.c1 = out.c2 = m.centroid;
     }
     out.point = (out.c1 + out.c2) * 0.5;
+    // Exact area gradient of i (Feng, Han & Owen 2012): the edges on i's boundary, each -n L =
+    // perp(q - p), with moment (m - s) . (q - p) = (|q - s|^2 - |p - s|^2)/2 about s.
+    for (std::size_t k = 0; k < poly.size(); ++k) {
+        if (!poly[k].edgeOnI) continue;
+        const Vec2 p = poly[k].p, q = poly[(k + 1) % poly.size()].p;
+        out.pull += perp(q - p);
+        out.twist += 0.5 * (norm2(q - out.point) - norm2(p - out.point));
+    }
     const Vec2 line = out.c2 - out.c1;
     const Real len = norm(line);
     // The part of i's boundary inside j lies on j's side of the contact line, the part of j's

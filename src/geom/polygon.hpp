@@ -38,6 +38,8 @@ struct PolygonOverlap {
     Vec2 point;                 ///< [m] contact point (c1 + c2)/2
     Vec2 normal;                ///< unit, perpendicular to c1c2, pushes i away from j
     int crossings = 0;          ///< boundary crossings found (2 normally; more: the farthest pair is used)
+    Vec2 pull;                  ///< [m] -dA/dx_i: sum of -n_e L_e over the overlap edges on i's boundary
+    Real twist = 0;             ///< [m^2] their moment about `point` (see geom::AreaContact)
     std::vector<Vec2> polygon;  ///< the overlap polygon (counter-clockwise)
 };
 PolygonOverlap convexOverlap(const std::vector<Vec2>& i, const std::vector<Vec2>& j);

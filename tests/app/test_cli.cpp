@@ -187,6 +187,7 @@ TEST(Cli, InfoHelpVersion) {
     r = test::runGranulab("help laws", dir);
     EXPECT_EQ(r.status, 0);
     EXPECT_NE(r.output.find("cundall_strack"), std::string::npos);
+    EXPECT_NE(r.output.find("area_potential"), std::string::npos);  // the row of the registry
     r = test::runGranulab("help restitution", dir);
     EXPECT_EQ(r.status, 0);
     EXPECT_NE(r.output.find("0.30     0.3723    0.4168    0.4849"), std::string::npos)

@@ -8,7 +8,8 @@
 // registry (registry.cpp), validation, `granulab help laws`, the depth kernels
 // (dem/forces_depth.hpp) and the contact energy pick it up from the variant. A law of the gc2d
 // area family also needs its term in dem/forces_area.hpp (areaLaw), the form traits in
-// dem/forces_detail.hpp and its pairing rule in registry.cpp (buildContactLaw).
+// dem/forces_detail.hpp (kAreaNormal), its pairing rule in registry.cpp (buildContactLaw),
+// areaModulus below and its energy in dem/contact_energy.cpp.
 #pragma once
 #include <fmt/format.h>
 
@@ -102,7 +103,53 @@ struct AreaNormal {
     Real energy(Real overlap, Real /*reff*/) const noexcept { return 0.5 * E * overlap * overlap; }
 };
 
-using NormalLaw = std::variant<HookeNormal, HertzNormal, AreaNormal>;
+/// Energy-conserving overlap-area law (Feng, Han & Owen 2012, "Energy-conserving contact
+/// interaction models for arbitrarily shaped discrete elements", CMAME; docs/physics/
+/// contact-laws.md, `normal = "area_potential"`): potential W(A) = E A^2 / (2 l0^2) with a constant
+/// l0 = R_i R_j/(R_i + R_j) from the bounding radii (l0 = R_i at a wall). The force is the exact
+/// generalised force -W'(A) dA/dq: on i, W'(A) times the area gradient of the overlap edges on
+/// i's boundary (geom::AreaContact::pull, twist); with two crossings W'(A) L_c along the chord
+/// normal at the chord midpoint, so a flat face with L_c = l0 feels gc2d's E A / l0. Cohesion
+/// k_coh adds the potential -k_coh A (gc2d's k_coh L_c along -n). Same kernel and damping and
+/// friction partners as AreaNormal.
+struct AreaPotentialNormal {
+    static constexpr LawAxis kAxis = LawAxis::Normal;
+    static constexpr const char* kKeyword = "area_potential";
+    static constexpr const char* kDoc =
+        "energy-conserving overlap-area law (Feng et al. 2012): W = E A^2/(2 l0^2), l0 = R_i R_j/(R_i + R_j) "
+        "from the bounding radii, F = -dW/dq (W'(A) L_c n for two crossings); cohesion -k_coh A";
+    static std::vector<LawParamSpec> params() {
+        return {lawParam("E", "N/m", 0, kUnbounded, true, "required",
+                         "2D elastic modulus (a flat face of length l0 feels E A / l0)"),
+                lawParam("cohesion", "N/m", 0, kUnbounded, false, "0",
+                         "k_coh: potential -k_coh A, i.e. k_coh L_c along -n while overlapping")};
+    }
+    static AreaPotentialNormal make(const LawParams& p) { return {p.require("E"), p.getOr("cohesion", 0.0)}; }
+
+    Real E = 0;         ///< [N/m]
+    Real cohesion = 0;  ///< [N/m]
+    /// dU/dA = W'(A) - k_coh = E A / l0^2 - k_coh [N/m], for the overlap area A [m^2] and 1/l0 [1/m].
+    Real slope(Real area, Real invL0) const noexcept { return E * area * invL0 * invL0 - cohesion; }
+    /// U(A) = E A^2 / (2 l0^2) - k_coh A [J] (per unit depth: J/m in strict 2D).
+    Real potential(Real area, Real invL0) const noexcept {
+        const Real h = area * invL0;
+        return 0.5 * E * h * h - cohesion * area;
+    }
+    // The depth interface of the other normal laws, for generic code (time-step advice) only:
+    // a flat face of length l0, A = l0 delta.
+    Real force(Real overlap, Real /*reff*/) const noexcept { return E * overlap; }
+    Real stiffness(Real /*overlap*/, Real /*reff*/) const noexcept { return E; }
+    Real energy(Real overlap, Real /*reff*/) const noexcept { return 0.5 * E * overlap * overlap; }
+};
+
+using NormalLaw = std::variant<HookeNormal, HertzNormal, AreaNormal, AreaPotentialNormal>;
+
+/// The modulus E [N/m] of an overlap-area normal law (gc2d or energy-conserving), else null.
+inline const Real* areaModulus(const NormalLaw& n) noexcept {
+    if (const auto* a = std::get_if<AreaNormal>(&n)) return &a->E;
+    if (const auto* a = std::get_if<AreaPotentialNormal>(&n)) return &a->E;
+    return nullptr;
+}
 
 // ---------------------------------------------------------------- normal damping
 // Each returns the normal damping coefficient c [N s/m]; the damping force is c * v_n.
@@ -197,13 +244,14 @@ struct MassScaledDamping {
 
 /// gc2d normal damping (gc2d spec section 3.3, Eq. 2.21/2.22 with erratum 1): D = gamma
 /// sqrt(E m_perp) dA / (l dt), dA the change of the overlap area since the last step; while
-/// separating clipped so that F_n + D >= 0 (never attractive). Only with normal = "area".
+/// separating clipped so that F_n + D >= 0 (never attractive). Only with normal = "area" or
+/// "area_potential" (there l = l0).
 struct AreaDamping {
     static constexpr LawAxis kAxis = LawAxis::Damping;
     static constexpr const char* kKeyword = "gamma";
     static constexpr const char* kDoc =
         "gc2d damping gamma sqrt(E m_perp) dA/(l dt), clipped so the contact never attracts (normal = "
-        "\"area\")";
+        "\"area\" or \"area_potential\", l = l0)";
     static std::vector<LawParamSpec> params() {
         return {lawParam("gamma", "-", 0, kUnbounded, false, "required",
                          "damping factor (gc2d default 0.5; 0 elastic)")};
@@ -358,13 +406,13 @@ struct MindlinTangential {
 /// gc2d Cundall-Strack friction (gc2d spec section 3.4, Eq. 2.23-2.27, errata 3 and 4): a spring
 /// S += k_t v_par dt attached at first touch, a viscous term sqrt(k_t m_par) v_par, the total
 /// capped at mu F_n (Coulomb, Eq. 2.24) or mu (|v_par| / 1 m/s)^(-1/10) F_n (Rabinowicz,
-/// Eq. 2.25), the spring clipped to the cap. Only with normal = "area".
+/// Eq. 2.25), the spring clipped to the cap. Only with normal = "area" or "area_potential".
 struct AreaFriction {
     static constexpr LawAxis kAxis = LawAxis::Tangential;
     static constexpr const char* kKeyword = "gc2d";
     static constexpr const char* kDoc =
         "gc2d Cundall-Strack spring k_t (2/7 E) + sqrt(k_t m_par) v_par, capped at mu F_n, spring clipped "
-        "(normal = \"area\")";
+        "(normal = \"area\" or \"area_potential\")";
     static std::vector<LawParamSpec> params() {
         LawParamSpec damped = lawParam("damped", "-", 0, 1, false, "true",
                                        "viscous term sqrt(k_t m_par) v_par (gc2d Eq. 2.26)");

@@ -147,30 +147,32 @@ ContactLaw buildContactLaw(const model::ContactDef& def, const std::string& ctx,
                                     spec->unit));
     }
 
-    // The gc2d area family (normal "area", damping "gamma", tangential "gc2d") has its own kernel
-    // and is not combined with the overlap-depth laws.
+    // The gc2d area family (normal "area" or "area_potential", damping "gamma", tangential "gc2d")
+    // has its own kernel and is not combined with the overlap-depth laws.
     if (allKnown) {
-        const bool area = def.normal == AreaNormal::kKeyword;
+        const bool area = def.normal == AreaNormal::kKeyword || def.normal == AreaPotentialNormal::kKeyword;
         const bool dampingOk =
             area ? (def.damping == NoDamping::kKeyword || def.damping == AreaDamping::kKeyword)
                  : def.damping != AreaDamping::kKeyword;
         const bool tangentialOk =
             area ? (def.tangential == NoFriction::kKeyword || def.tangential == AreaFriction::kKeyword)
                  : def.tangential != AreaFriction::kKeyword;
+        constexpr const char* kFamily = "normal = \"area\" or \"area_potential\" (overlap-area laws)";
         if (!dampingOk)
             diags.error(def.loc, ctx + ".damping",
-                        area ? fmt::format("normal = \"area\" takes damping \"none\" or \"gamma\", got '{}'",
-                                           def.damping)
-                             : "damping = \"gamma\" belongs to normal = \"area\" (gc2d overlap-area law)");
+                        area ? fmt::format("normal = \"{}\" takes damping \"none\" or \"gamma\", got '{}'",
+                                           def.normal, def.damping)
+                             : fmt::format("damping = \"gamma\" belongs to {}", kFamily));
         if (!tangentialOk)
             diags.error(def.loc, ctx + ".tangential",
-                        area
-                            ? fmt::format("normal = \"area\" takes tangential \"none\" or \"gc2d\", got '{}'",
-                                          def.tangential)
-                            : "tangential = \"gc2d\" belongs to normal = \"area\" (gc2d overlap-area law)");
+                        area ? fmt::format("normal = \"{}\" takes tangential \"none\" or \"gc2d\", got '{}'",
+                                           def.normal, def.tangential)
+                             : fmt::format("tangential = \"gc2d\" belongs to {}", kFamily));
         if (area && def.rolling != NoRolling::kKeyword)
             diags.error(def.loc, ctx + ".rolling",
-                        "normal = \"area\" has no rolling resistance law (polygons roll on their corners)");
+                        fmt::format("normal = \"{}\" has no rolling resistance law (polygons roll on their "
+                                    "corners)",
+                                    def.normal));
     }
 
     ContactLaw law;
