@@ -58,12 +58,17 @@ std::optional<NewParticle> drawParticle(const InsertTemplate& what, CounterRng& 
 
 /// True if a disk of radius r at c (a particle's bounding circle) is clear of every particle of
 /// the store, of `fresh` and of every solid wall.
+/// `above` (may be null) gets the height [m] at which the disk would clear the particle that
+/// blocks it (its centre height plus both radii).
 bool isClear(Vec2 c, Real r, const model::ParticleStore& s, const std::vector<NewParticle>& fresh,
-             const model::WallSet& walls) {
+             const model::WallSet& walls, Real* above = nullptr) {
     for (std::size_t j = 0; j < s.size(); ++j) {
         const Real reach = r + s.radius[j];
         const Real dx = s.x[j] - c.x, dy = s.y[j] - c.y;
-        if (dx * dx + dy * dy < reach * reach) return false;
+        if (dx * dx + dy * dy < reach * reach) {
+            if (above) *above = s.y[j] + reach * (1 + 1e-9);
+            return false;
+        }
     }
     for (const auto& q : fresh)
         if (norm2(q.position - c) < (r + q.radius) * (r + q.radius)) return false;
@@ -156,9 +161,20 @@ std::vector<NewParticle> ParticleFlow::entering(const model::ParticleStore& s, c
             CounterRng rng = insertionRng(seed, 0, e, k);
             const auto drawn = drawParticle(src.what, rng, pool);
             bool placed = false;
+            Real lift = -1e300;  // REL retry: just above the grain that blocked the last try
+            Real x = 0;
             for (int attempt = 0; drawn && attempt < src.what.attempts && !placed; ++attempt) {
                 NewParticle p = *drawn;
-                const Real x = src.position.x + (rng.uniform() - 0.5) * width;
+                if (lift > -1e300) {
+                    p.position = {x, lift};
+                    lift = -1e300;
+                    if (isClear(p.position, p.radius, s, fresh, walls, &lift)) {
+                        fresh.push_back(p);
+                        placed = true;
+                    }
+                    continue;
+                }
+                x = src.position.x + (rng.uniform() - 0.5) * width;
                 Real base = 0;
                 if (src.relative) {  // REL: ride on the pile top under the drop point (gc2d 6.5)
                     // Grains still falling are not the pile: only those slower than a tenth of the
@@ -177,7 +193,7 @@ std::vector<NewParticle> ParticleFlow::entering(const model::ParticleStore& s, c
                     base = any ? top : 0;
                 }
                 p.position = {x, base + src.position.y};
-                if (isClear(p.position, p.radius, s, fresh, walls)) {
+                if (isClear(p.position, p.radius, s, fresh, walls, src.relative ? &lift : nullptr)) {
                     fresh.push_back(p);
                     placed = true;
                 }
