@@ -69,12 +69,13 @@ Real areaEnergy(const model::ParticleStore& s, const model::WallSet& walls, cons
 }  // namespace
 
 Real contactEnergy(const model::ParticleStore& s, const model::WallSet& walls, const NeighborList& list,
-                   const LawTable& laws, const model::ShapePool& shapes) {
+                   const LawTable& laws, const model::ShapePool& shapes, Real scale) {
     Real energy = 0;
     const std::uint32_t nm = laws.materialCount();
     ShapeContext sc;  // own world corners and statistics: energies do not disturb the step
     sc.pool = &shapes;
     sc.anyPolygon = shapes.size() > 0;
+    sc.scale = scale;
     sc.update(s);
     const auto eval = [&](const ContactList& cl, bool wall) {
         detail::forEachBucket(cl, laws, [&](auto* nT, auto* dT, auto* tT, std::uint32_t b, std::uint32_t e) {

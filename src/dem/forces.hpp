@@ -52,7 +52,8 @@ struct ShapeContext {
     std::vector<std::uint32_t> first;  ///< first world corner of each slot (polygons only)
     geom::FeatureStats featureStats;   ///< closest-feature work since the last reset
     bool anyPolygon = false;
-    /// Recomputes the world corners from positions and angles (gc2d Eq. 2.35, scale s = 1, angle
+    Real scale = 1;  ///< global size scaling s(t) of the body corners (gc2d 2.4, Eq. 2.30/2.31)
+    /// Recomputes the world corners from positions, angles and the scale s (gc2d Eq. 2.35, angle
     /// counter-clockwise); dem/shape_context.cpp.
     void update(const model::ParticleStore& s);
 };
@@ -82,6 +83,6 @@ void computeForces(model::ParticleStore& s, const model::WallSet& walls, Neighbo
 /// as F_n h_eff / 2 (exact for flat faces). `shapes`: the polygon shapes (world corners are
 /// computed here from the store).
 Real contactEnergy(const model::ParticleStore& s, const model::WallSet& walls, const NeighborList& list,
-                   const LawTable& laws, const model::ShapePool& shapes);
+                   const LawTable& laws, const model::ShapePool& shapes, Real scale = 1);
 
 }  // namespace granulab::dem

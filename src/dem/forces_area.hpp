@@ -28,7 +28,7 @@ inline geom::PolygonFrame frameOf(const model::ParticleStore& s, const ShapeCont
     f.corners = sc.world.data() + sc.first[i];
     f.n = static_cast<int>(sc.pool->count[k]);
     f.centre = {s.x[i], s.y[i]};
-    f.inradius = sc.pool->inradius[k];
+    f.inradius = sc.pool->inradius[k] * sc.scale;
     return f;
 }
 
@@ -142,7 +142,7 @@ AreaForce areaLaw(const N& nl, const D& dl, const T& tl, const AreaPair& c, Real
     const auto& g = c.g;
     Real invL;
     if constexpr (kPotential) {
-        invL = c.invL0;  // a constant of the pair: the force is a gradient
+        invL = c.invL0;                  // a constant of the pair: the force is a gradient
     } else if (c.wall && !c.wallBody) {  // a polyline plate: infinitely long, l = r_i (spec 3.7)
         invL = 1.0 / norm(c.ri);
     } else {  // 1/l, l = r_i r_j/(r_i + r_j) (Eq. 2.15); a body wall's r_j = |s - x_wall| (spec 3.7)

@@ -341,6 +341,18 @@ std::optional<GravitySchedule> buildGravitySchedule(const model::SceneDef& scene
     return s;
 }
 
+std::optional<SizeCycle> buildSizeCycle(const model::SceneDef& scene) {
+    const auto& z = scene.machines.sizeScaling;
+    if (!z.present) return std::nullopt;
+    SizeCycle c;
+    c.amplitude = z.amplitude;
+    c.frequency = z.frequency;
+    c.slope = z.slope;
+    c.t1 = z.t1;
+    c.t2 = z.t2;
+    return c;
+}
+
 std::vector<WorldConfig::LawChange> buildLawChanges(const model::SceneDef& scene, Real dt) {
     std::vector<model::ChangeDef> changes = scene.machines.changes;
     std::stable_sort(changes.begin(), changes.end(),

@@ -34,6 +34,8 @@ Real largestInsertedRadius(const model::SceneDef& scene);
 
 std::optional<GravitySchedule> buildGravitySchedule(const model::SceneDef& scene);
 
+std::optional<SizeCycle> buildSizeCycle(const model::SceneDef& scene);
+
 /// The law tables after each [[change]] (cumulative, in time order), at whole steps of dt.
 std::vector<WorldConfig::LawChange> buildLawChanges(const model::SceneDef& scene, Real dt);
 

@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: MIT
-// Neighbour-list rebuild with history transfer.
+// Neighbour-list rebuild with history transfer, and the updates for removed and inserted particles.
 #include "dem/neighbor_list.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+
+#include "geom/segment.hpp"
 
 namespace granulab::dem {
 
@@ -166,6 +169,89 @@ void NeighborList::removeSlots(const std::vector<std::uint32_t>& oldToNew) {
         }
     x0.resize(w);
     y0.resize(w);
+}
+
+namespace {
+/// Inserts `added` (form, first, second), in order, at the end of their buckets of `l`.
+void appendToBuckets(ContactList& l, const std::vector<std::array<std::uint32_t, 3>>& added,
+                     std::uint32_t forms, bool rolling, bool area, bool trialHistory) {
+    if (added.empty()) return;
+    if (l.bucketStart.empty()) l.bucketStart.assign(forms + 1, 0);
+    const std::size_t n = l.size(), m = n + added.size();
+    ContactList out;
+    out.first.reserve(m);
+    out.second.reserve(m);
+    out.bucketStart.assign(l.bucketStart.size(), 0);
+    const auto copyRange = [&](std::size_t b, std::size_t e) {
+        for (std::size_t k = b; k < e; ++k) {
+            out.first.push_back(l.first[k]);
+            out.second.push_back(l.second[k]);
+            out.xi.push_back(l.xi[k]);
+            if (!l.zeta.empty()) out.zeta.push_back(l.zeta[k]);
+            if (!l.areaOld.empty()) out.areaOld.push_back(l.areaOld[k]);
+            if (!l.features.empty()) out.features.push_back(l.features[k]);
+        }
+    };
+    for (std::uint32_t f = 0; f + 1 < l.bucketStart.size(); ++f) {
+        out.bucketStart[f] = static_cast<std::uint32_t>(out.first.size());
+        copyRange(l.bucketStart[f], l.bucketStart[f + 1]);
+        for (const auto& a : added) {
+            if (a[0] != f) continue;
+            out.first.push_back(a[1]);
+            out.second.push_back(a[2]);
+            out.xi.push_back(0);
+            if (rolling) out.zeta.push_back(0);
+            if (area) {
+                out.areaOld.push_back(0);
+                out.features.push_back(geom::FeatureCache{});
+            }
+        }
+    }
+    out.bucketStart.back() = static_cast<std::uint32_t>(out.first.size());
+    // Trial columns are scratch refreshed from the accepted ones at every evaluation.
+    if (!l.xiTrial.empty() || trialHistory) out.xiTrial.assign(m, 0.0);
+    if (!l.zetaTrial.empty()) out.zetaTrial.assign(m, 0.0);
+    if (!l.areaOldTrial.empty()) out.areaOldTrial.assign(m, 0.0);
+    l = std::move(out);
+}
+}  // namespace
+
+void NeighborList::appendParticles(const model::ParticleStore& s, const model::WallSet& walls,
+                                   std::size_t first, Real skin, const LawTable& laws, bool trialHistory) {
+    const std::uint32_t forms = std::max<std::uint32_t>(laws.formCount(), 1);
+    const auto formOf = [&](std::uint32_t ma, std::uint32_t mb) {
+        return laws.formCount() ? laws.formOf(ma, mb) : 0u;
+    };
+    std::vector<std::array<std::uint32_t, 3>> pairAdds, wallAdds;
+    const Real margin = 2 * skin;
+    for (std::size_t k = first; k < s.size(); ++k) {
+        const auto kk = static_cast<std::uint32_t>(k);
+        for (std::uint32_t j = 0; j < kk; ++j) {  // j < k: the pair key (j, k)
+            const Real reach = s.radius[j] + s.radius[k] + margin;
+            const Real dx = s.x[j] - s.x[k], dy = s.y[j] - s.y[k];
+            if (dx * dx + dy * dy < reach * reach)
+                pairAdds.push_back({formOf(s.material[j], s.material[k]), j, kk});
+        }
+        std::uint32_t lastBody = 0xFFFFFFFFu;
+        for (std::uint32_t g = 0; g < walls.segments.size(); ++g) {
+            const auto& seg = walls.segments[g];
+            const auto& wall = walls.walls[seg.wall];
+            const Vec2 c{s.x[k], s.y[k]};
+            const Vec2 q = seg.a + (seg.b - seg.a) * geom::closestParameter(seg.a, seg.b, c);
+            const Real reach = s.radius[k] + margin;
+            if (norm2(c - q) >= reach * reach) continue;
+            const std::uint32_t key = wall.body ? wall.firstSegment : g;  // one pair per body
+            if (wall.body && lastBody == seg.wall) continue;
+            if (wall.body) lastBody = seg.wall;
+            wallAdds.push_back({formOf(s.material[k], seg.material), kk, key});
+        }
+    }
+    appendToBuckets(pairs, pairAdds, forms, laws.hasRolling(), laws.hasArea(), trialHistory);
+    appendToBuckets(wallPairs, wallAdds, forms, laws.hasRolling(), laws.hasArea(), trialHistory);
+    for (std::size_t k = first; k < s.size(); ++k) {
+        x0.push_back(s.x[k]);
+        y0.push_back(s.y[k]);
+    }
 }
 
 void NeighborList::rebuild(const model::ParticleStore& s, const model::WallSet& walls, Real skin, Real time,

@@ -77,6 +77,12 @@ public:
     /// others through `oldToNew` (kRemovedSlot: removed). The renumbering keeps the slot order,
     /// so buckets stay sorted and the history stays with its pairs; no broad phase is needed.
     void removeSlots(const std::vector<std::uint32_t>& oldToNew);
+    /// Particles were appended from slot `first` on: adds their candidates (particles and wall
+    /// segments within r + r' + 2 skin, so that the skin guarantee holds until the next rebuild
+    /// although the others have moved since theirs) at the end of their law-form buckets, with
+    /// empty history; no broad phase. O(N) per new particle.
+    void appendParticles(const model::ParticleStore& s, const model::WallSet& walls, std::size_t first,
+                         Real skin, const LawTable& laws, bool trialHistory);
 };
 
 }  // namespace granulab::dem

@@ -101,24 +101,38 @@ ParticleFlow::ParticleFlow(FlowConfig config) : m_config(std::move(config)) {
     m_counters.outletMass.assign(m_config.outlets.size(), 0);
 }
 
-std::vector<std::uint32_t> ParticleFlow::leaving(const model::ParticleStore& s, Real t, Real maxRadius) {
-    std::vector<std::uint32_t> out;
+void ParticleFlow::refreshCandidates(const model::ParticleStore& s, Real maxRadius, Real skin) {
+    m_near.resize(m_config.outlets.size());
     const Real* __restrict x = s.x.data();
     const Real* __restrict y = s.y.data();
     for (std::size_t o = 0; o < m_config.outlets.size(); ++o) {
         const Outlet& q = m_config.outlets[o];
-        if (t < q.openAt) continue;
+        auto& near = m_near[o];
+        near.clear();
+        const Real pad = q.isRegion ? skin : maxRadius + skin;
+        const Real bx0 = (q.isRegion ? q.xmin : std::min(q.a.x, q.b.x)) - pad;
+        const Real bx1 = (q.isRegion ? q.xmax : std::max(q.a.x, q.b.x)) + pad;
+        const Real by0 = (q.isRegion ? q.ymin : std::min(q.a.y, q.b.y)) - pad;
+        const Real by1 = (q.isRegion ? q.ymax : std::max(q.a.y, q.b.y)) + pad;
+        const bool outside = q.isRegion && !q.removeInside;  // candidates: not deep inside the region
+        for (std::uint32_t i = 0; i < s.size(); ++i) {
+            const bool deepInside =
+                x[i] > q.xmin + skin && x[i] < q.xmax - skin && y[i] > q.ymin + skin && y[i] < q.ymax - skin;
+            const bool inBox = x[i] >= bx0 && x[i] <= bx1 && y[i] >= by0 && y[i] <= by1;
+            if (outside ? !deepInside : inBox) near.push_back(i);
+        }
+    }
+}
+
+std::vector<std::uint32_t> ParticleFlow::leaving(const model::ParticleStore& s, Real t) {
+    std::vector<std::uint32_t> out;
+    for (std::size_t o = 0; o < m_config.outlets.size(); ++o) {
+        const Outlet& q = m_config.outlets[o];
+        if (t < q.openAt || o >= m_near.size()) continue;
         const Vec2 d = q.b - q.a;
         const Vec2 nOut = perp(d) / norm(d);  // cfddem: n_out = z x d, left of a -> b
-        // The capture zone's bounding box: a cheap first test for every particle.
-        const Real bx0 = q.isRegion ? q.xmin : std::min(q.a.x, q.b.x) - maxRadius;
-        const Real bx1 = q.isRegion ? q.xmax : std::max(q.a.x, q.b.x) + maxRadius;
-        const Real by0 = q.isRegion ? q.ymin : std::min(q.a.y, q.b.y) - maxRadius;
-        const Real by1 = q.isRegion ? q.ymax : std::max(q.a.y, q.b.y) + maxRadius;
-        const bool everywhere = q.isRegion && !q.removeInside;
-        for (std::uint32_t i = 0; i < s.size(); ++i) {
-            if (!everywhere && (x[i] < bx0 || x[i] > bx1 || y[i] < by0 || y[i] > by1)) continue;
-            const Vec2 c{x[i], y[i]};
+        for (const std::uint32_t i : m_near[o]) {
+            const Vec2 c{s.x[i], s.y[i]};
             bool gone;
             if (q.isRegion) {
                 const bool inside = c.x >= q.xmin && c.x < q.xmax && c.y >= q.ymin && c.y < q.ymax;

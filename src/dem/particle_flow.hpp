@@ -99,8 +99,12 @@ public:
     const FlowCounters& counters() const noexcept { return m_counters; }
 
     /// Slots (ascending) of the particles that left through an open outlet at time t [s]; their
-    /// count and mass are booked per outlet. `maxRadius` [m] bounds every particle's radius.
-    std::vector<std::uint32_t> leaving(const model::ParticleStore& s, Real t, Real maxRadius);
+    /// count and mass are booked per outlet. Only the candidates of refreshCandidates are tested.
+    std::vector<std::uint32_t> leaving(const model::ParticleStore& s, Real t);
+    /// The particles that can reach an outlet before the next neighbour rebuild: those within
+    /// `maxRadius` + `skin` [m] of its capture zone (no particle moves more than skin/2 between
+    /// rebuilds). Called at every rebuild and whenever particles enter or leave.
+    void refreshCandidates(const model::ParticleStore& s, Real maxRadius, Real skin);
     /// Particles entering at time t, the end of a step of length dt [s], placed overlap-free
     /// against the store and the solid walls (retry, then skip and count); `gravity` [m/s^2]
     /// tells REL sources which grains are still falling.
@@ -115,6 +119,7 @@ public:
 private:
     FlowConfig m_config;
     FlowCounters m_counters;
+    std::vector<std::vector<std::uint32_t>> m_near;  ///< candidate slots per outlet, ascending
 };
 
 }  // namespace granulab::dem

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
-// Time schedules of the DEM scene (gc2d spec 6.6): gravity magnitude CONSTANT, LINEAR, STEP and
-// SMOOTH_STEP between g1 and g2 over [t1, t2] with the spec's recommended phase, and a gravity
-// direction turning linearly over a tilt window (tilting a box). Pure functions of time.
+// Time schedules of the DEM scene: gravity magnitude (gc2d spec 6.6) CONSTANT, LINEAR, STEP and
+// SMOOTH_STEP between g1 and g2 over [t1, t2] with the spec's recommended phase, a gravity
+// direction turning linearly over a tilt window (tilting a box), and the global size scaling
+// s(t) of thermal cycling (gc2d spec 2.4, Eq. B.2). Pure functions of time.
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -60,6 +61,20 @@ inline Real gravityDirection(const GravitySchedule& g, Real t) noexcept {
 inline Vec2 gravityAt(const GravitySchedule& g, Real t) noexcept {
     const Real m = gravityMagnitude(g, t), a = gravityDirection(g, t);
     return {m * std::cos(a), m * std::sin(a)};
+}
+
+/// Global size scaling of gc2d HEAT_* (spec 2.4): s(t) = 1 + a (1/2 - 1/2 tanh(S cos(2 pi f t_c))),
+/// t_c = clamp(t, t1, t2): a smoothed square wave between about 1 and 1 + a.
+struct SizeCycle {
+    Real amplitude = 0.01;    ///< a (HEAT_AMPLITUDE)
+    Real frequency = 1;       ///< f [1/s] (HEAT_FREQUENCE)
+    Real slope = 10;          ///< S, steepness (HEAT_SLOPE)
+    Real t1 = 0, t2 = 1e300;  ///< [s] HEAT_TIME
+};
+
+inline Real sizeScale(const SizeCycle& c, Real t) noexcept {
+    const Real tc = std::clamp(t, c.t1, c.t2);
+    return 1 + c.amplitude * (0.5 - 0.5 * std::tanh(c.slope * std::cos(2 * kPi * c.frequency * tc)));
 }
 
 }  // namespace granulab::dem

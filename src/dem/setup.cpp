@@ -286,6 +286,7 @@ World makeWorld(const model::SceneDef& scene, const InitialParticles& initial) {
     WorldConfig config = makeWorldConfig(scene, rmax);
     config.flow = std::move(flow);
     config.gravitySchedule = buildGravitySchedule(scene);
+    config.sizeCycle = buildSizeCycle(scene);
     config.lawChanges = buildLawChanges(scene, scene.dem.dt);
     for (const auto& def : scene.springs) {  // ids are generation indices, equal to slots at t = 0
         PullSpring sp;

@@ -23,7 +23,7 @@ void ShapeContext::update(const model::ParticleStore& s) {
     for (std::size_t i = 0; i < n; ++i) {
         const std::uint32_t k = s.shape[i];
         if (k == model::kDiskShape) continue;
-        const Real c = std::cos(s.angle[i]), sn = std::sin(s.angle[i]);
+        const Real c = std::cos(s.angle[i]) * scale, sn = std::sin(s.angle[i]) * scale;  // s R(phi)
         const Vec2 x{s.x[i], s.y[i]};
         const Vec2* body = pool->corners.data() + pool->start[k];
         Vec2* out = world.data() + first[i];

@@ -56,6 +56,19 @@ Real World::totalMass() const noexcept {
     return m;
 }
 
+void World::applySizeScale(Real t) noexcept {
+    const Real target = dem::sizeScale(*m_config.sizeCycle, t);
+    if (target == m_scale) return;
+    const Real ratio = target / m_scale;
+    const Real ratio2 = ratio * ratio;
+    for (Real& r : m_store.radius) r *= ratio;
+    for (Real& ii : m_store.invInertia) ii /= ratio2;
+    m_minRadius *= ratio;
+    m_maxRadius *= ratio;
+    m_scale = target;
+    m_shapes.scale = target;
+}
+
 void World::applyLawChanges() {
     const auto& changes = m_config.lawChanges;
     bool changed = false;
@@ -68,11 +81,12 @@ void World::applyLawChanges() {
 
 void World::exchangeParticles() {
     const Real t = time();
-    const std::vector<std::uint32_t> leaving = m_flow.leaving(m_store, t, m_maxRadius);
+    const std::vector<std::uint32_t> leaving = m_flow.leaving(m_store, t);
     std::vector<NewParticle> entering =
         m_flow.entering(m_store, m_walls, m_pool, t, m_config.dt, gravityAt(t));
     if (leaving.empty() && entering.empty()) return;
     std::vector<std::uint32_t> oldToNew;
+    const std::size_t before = m_store.size() - leaving.size();  // first slot of the new particles
     if (!leaving.empty()) {
         const std::size_t n = m_store.size();
         oldToNew.assign(n, kRemovedSlot);
@@ -97,9 +111,10 @@ void World::exchangeParticles() {
         m_broad->slotsRenumbered();
     }
     const Vec2 g = gravityAt(t);
-    for (const NewParticle& p : entering) {
-        const std::size_t k = m_store.add(m_nextId++, p.position, p.velocity, p.angle, p.omega, p.radius,
-                                          p.mass, p.inertia, p.material, p.shape);
+    for (const NewParticle& p : entering) {  // at the current size scale s: radius s r, inertia s^2 I
+        const std::size_t k =
+            m_store.add(m_nextId++, p.position, p.velocity, p.angle, p.omega, p.radius * m_scale, p.mass,
+                        p.inertia * m_scale * m_scale, p.material, p.shape);
         // Until the next force evaluation the new particle feels its weight (it touches nothing).
         m_store.fx[k] = p.mass * g.x;
         m_store.fy[k] = p.mass * g.y;
@@ -107,12 +122,13 @@ void World::exchangeParticles() {
     }
     m_flow.bookInserted(entering);
     m_minRadius = m_store.size() ? *std::min_element(m_store.radius.begin(), m_store.radius.end()) : 1e300;
-    for (const NewParticle& p : entering) m_maxRadius = std::max(m_maxRadius, p.radius);
-    if (entering.empty()) {
-        m_list.removeSlots(oldToNew);  // removal only: renumber the lists, no broad phase
-    } else {
-        rebuildNeighbors(std::move(oldToNew));  // new particles need their candidates
-    }
+    for (const NewParticle& p : entering) m_maxRadius = std::max(m_maxRadius, p.radius * m_scale);
+    // No broad phase: removal renumbers the lists, new particles get their candidates directly.
+    if (!oldToNew.empty()) m_list.removeSlots(oldToNew);
+    if (!entering.empty())
+        m_list.appendParticles(m_store, m_walls, before, m_config.skin, m_laws,
+                               !m_integrator->singleEvaluation());
+    m_flow.refreshCandidates(m_store, m_maxRadius, m_config.skin);
 }
 
 void World::evaluateForces(const BodyForces& body, const DriftVelocities& drift, bool trial) {
@@ -153,12 +169,15 @@ void World::rebuildNeighbors(std::vector<std::uint32_t> oldToNew) {
             }
         }
     }
+    m_scaleAtRebuild = m_scale;
     m_list.rebuild(m_store, m_walls, m_config.skin, time(), *m_broad, m_laws, oldToNew,
                    !m_integrator->singleEvaluation());
+    if (m_flow.active()) m_flow.refreshCandidates(m_store, m_maxRadius, m_config.skin);
 }
 
 void World::initialize() {
     m_walls.place(time());
+    if (m_config.sizeCycle) applySizeScale(time());
     rebuildNeighbors();
     // Set-up evaluation: nothing has moved yet, so no tangential displacement (drift = none).
     evaluateForces(bodyForcesAt(m_step), DriftVelocities{}, false);
@@ -176,14 +195,19 @@ std::uint32_t World::step() {
     {  // 8 scene updaters (walls move and laws change before the forces of the new time)
         ScopedStage t(m_timers, Stage::Updaters);
         m_walls.advance(time(), dt, m_wallForce);
+        if (m_config.sizeCycle) applySizeScale(time());
         if (m_lawChangesDone < m_config.lawChanges.size()) applyLawChanges();
     }
     if (!std::isfinite(maxSpeed)) status |= kStepNonFinite;
     // A particle, or a wall sweeping through particles, moving half a radius in one step tunnels.
-    if ((maxSpeed + m_walls.maxSpeed()) * dt > 0.5 * m_minRadius) status |= kStepTunnelling;
+    if ((maxSpeed + m_walls.maxSpeedBetween(time() - dt, time())) * dt > 0.5 * m_minRadius)
+        status |= kStepTunnelling;
     {  // 2+3+5 neighbour check, broad phase and history transfer when needed
         ScopedStage t(m_timers, Stage::Neighbors);
-        const Real wallTravel = m_walls.maxSpeed() * (time() - m_list.wallTime0);
+        // Walls sweeping towards particles, and particles grown since the rebuild, use up the skin.
+        const Real growth = 2 * m_maxRadius * std::abs(m_scale - m_scaleAtRebuild) / m_scale;
+        const Real wallTravel =
+            m_walls.maxSpeedBetween(m_list.wallTime0, time()) * (time() - m_list.wallTime0) + growth;
         if (m_list.needsRebuild(m_store, m_config.skin, wallTravel)) rebuildNeighbors();
     }
     // 4+6+7: force evaluation(s) at the trial state and correction, until the integrator accepts.
@@ -222,7 +246,7 @@ Energies World::energies() const noexcept {
         e.rotational += 0.5 * inertia * s.omega[i] * s.omega[i];
         e.potential -= s.mass[i] * (g.x * s.x[i] + g.y * s.y[i]);
     }
-    e.elastic = contactEnergy(m_store, m_walls, m_list, m_laws, m_pool);
+    e.elastic = contactEnergy(m_store, m_walls, m_list, m_laws, m_pool, m_scale);
     return e;
 }
 
@@ -278,6 +302,8 @@ void World::saveState(std::ostream& os) const {
     m_pool.save(os);
     m_flow.save(os);
     writePod<std::uint64_t>(os, m_nextId);
+    writePod(os, m_scale);
+    writePod(os, m_scaleAtRebuild);
 }
 
 void World::loadState(std::istream& is) {
@@ -321,6 +347,11 @@ void World::loadState(std::istream& is) {
     m_pool.load(is);
     m_flow.load(is);
     m_nextId = readPod<std::uint64_t>(is);
+    m_scale = readPod<Real>(is);
+    m_scaleAtRebuild = readPod<Real>(is);
+    if (!(m_scale > 0) || !std::isfinite(m_scale) || !(m_scaleAtRebuild > 0))
+        throw std::runtime_error("checkpoint corrupt (size scale)");
+    m_shapes.scale = m_scale;
     for (std::size_t k = 0; k < s.size(); ++k)
         if (s.material[k] >= m_laws.materialCount() ||
             (s.shape[k] != model::kDiskShape && s.shape[k] >= m_pool.size()) || !(s.radius[k] > 0) ||
@@ -343,6 +374,7 @@ void World::loadState(std::istream& is) {
         m_laws = m_config.lawChanges[m_lawChangesDone++].laws;
     m_minRadius = s.size() ? *std::min_element(s.radius.begin(), s.radius.end()) : 1e300;
     for (const Real r : s.radius) m_maxRadius = std::max(m_maxRadius, r);
+    if (m_flow.active()) m_flow.refreshCandidates(m_store, m_maxRadius, m_config.skin);
     // Wall forces of the restored step are re-derived at the next step; stats start empty.
     m_stats = ForceStats{};
 }

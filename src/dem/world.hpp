@@ -47,6 +47,7 @@ struct WorldConfig {
     std::string broadPhase = "cell_grid";
     std::vector<PullSpring> springs;                 ///< slots refer to the store given to the World
     std::optional<GravitySchedule> gravitySchedule;  ///< replaces `gravity` when set (gc2d 6.6)
+    std::optional<SizeCycle> sizeCycle;              ///< global size scaling s(t) (gc2d 2.4)
     FlowConfig flow;                                 ///< sources, inlets, outlets (step 8)
     /// Contact laws replaced at a step (gc2d 6.7: friction or cohesion switched off at t).
     struct LawChange {
@@ -101,6 +102,8 @@ public:
     Vec2 gravity() const noexcept { return gravityAt(time()); }
     /// Total mass of the particles [kg].
     Real totalMass() const noexcept;
+    /// Current global size scale s (1 without [size_scaling]).
+    Real sizeScale() const noexcept { return m_scale; }
     /// Total contact force [N] on each wall at the last force evaluation.
     const std::vector<Vec2>& wallForce() const noexcept { return m_wallForce; }
     const StageTimers<Stage>& timers() const noexcept { return m_timers; }
@@ -131,6 +134,9 @@ private:
     void exchangeParticles();
     /// Applies the law changes due at the current step.
     void applyLawChanges();
+    /// Sets the global size scale to s(t): radii and polygon corners times s, mass kept, moment of
+    /// inertia times s^2 (gc2d 2.4, the spec's resolution of the ambiguity).
+    void applySizeScale(Real t) noexcept;
 
     WorldConfig m_config;
     model::ParticleStore m_store;
@@ -152,6 +158,8 @@ private:
     ParticleId m_nextId = 0;           ///< id of the next inserted particle
     std::size_t m_lawChangesDone = 0;  ///< entries of m_config.lawChanges applied
     LawTable m_baseLaws;               ///< the laws of t = 0
+    Real m_scale = 1;                  ///< global size scale s of the radius column and corners
+    Real m_scaleAtRebuild = 1;         ///< s at the last neighbour rebuild
 };
 
 }  // namespace granulab::dem

@@ -177,6 +177,15 @@ void readGravity(TableReader& r, model::GravityDef& g) {
     window(r, "tilt_window", g.tilt1, g.tilt2);
 }
 
+void readSizeScaling(TableReader& r, model::SizeScalingDef& z) {
+    z.present = true;
+    z.loc = r.loc();
+    r.number("amplitude", z.amplitude);
+    r.number("frequency", z.frequency);
+    r.number("slope", z.slope);
+    window(r, "window", z.t1, z.t2);
+}
+
 void readChange(TableReader& r, model::ChangeDef& c) {
     c.loc = r.loc();
     r.number("at", c.at);
@@ -239,6 +248,7 @@ void readMachineSections(TableReader& root, model::SceneDef& scene) {
         m.boundaries.push_back(b);
     });
     withTable(root, "gravity", [&](TableReader& t) { readGravity(t, m.gravity); });
+    withTable(root, "size_scaling", [&](TableReader& t) { readSizeScaling(t, m.sizeScaling); });
     forEachTable(root, "change", [&](TableReader& t, std::size_t) {
         model::ChangeDef c;
         readChange(t, c);

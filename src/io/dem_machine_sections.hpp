@@ -10,7 +10,8 @@
 
 namespace granulab::io {
 
-/// Reads [[drum]], [[source]], [[inlet]], [[outlet]], [[boundary]], [gravity] and [[change]].
+/// Reads [[drum]], [[source]], [[inlet]], [[outlet]], [[boundary]], [gravity], [size_scaling] and
+/// [[change]].
 void readMachineSections(TableReader& root, model::SceneDef& scene);
 
 /// A radius: a number or a size-distribution table (defined in io/dem_sections.cpp).

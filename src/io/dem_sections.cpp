@@ -415,8 +415,9 @@ void readDemSections(TableReader& root, model::SceneDef& scene) {
 SceneSections demSceneSections() {
     SceneSections s;
     s.engine = "dem";
-    s.sections = {"dem",    "material", "contact", "shape", "particle", "block",    "heap",    "wall",
-                  "spring", "drum",     "source",  "inlet", "outlet",   "boundary", "gravity", "change"};
+    s.sections = {"dem",    "material", "contact", "shape",        "particle", "block",
+                  "heap",   "wall",     "spring",  "drum",         "source",   "inlet",
+                  "outlet", "boundary", "gravity", "size_scaling", "change"};
     s.required = "dem";
     s.requiredHint = "needs at least dt";
     s.needsEndTime = true;

@@ -340,6 +340,15 @@ void checkMachineDefs(const model::SceneDef& sc, Diagnostics& d, const std::vect
             d.error(g.loc, "gravity.ramp",
                     fmt::format("must be in [0, 1] (0: step, 1: linear), got {}", g.ramp));
     }
+    if (m.sizeScaling.present) {
+        const auto& z = m.sizeScaling;
+        if (!(z.amplitude > -1 && z.amplitude <= 1))
+            d.error(z.loc, "size_scaling.amplitude",
+                    fmt::format("must be in (-1, 1] (s stays positive), got {}", z.amplitude));
+        c.nonNegative(z.loc, "size_scaling.frequency", z.frequency, "1/s");
+        c.finite(z.loc, "size_scaling.slope", {z.slope});
+        c.window(z.loc, "size_scaling.window", z.t1, z.t2);
+    }
     for (std::size_t k = 0; k < m.changes.size(); ++k) {
         const auto& ch = m.changes[k];
         const std::string key = fmt::format("change[{}]", k);

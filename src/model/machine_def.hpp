@@ -111,6 +111,16 @@ struct GravityDef {
     SourceLoc loc;
 };
 
+/// gc2d HEAT_* (spec 2.4): global size scaling s(t) = 1 + a (1/2 - tanh(S cos 2 pi f t_c)/2).
+struct SizeScalingDef {
+    bool present = false;
+    Real amplitude = 0.01;    ///< a
+    Real frequency = 1;       ///< [1/s] f
+    Real slope = 10;          ///< S
+    Real t1 = 0, t2 = 1e300;  ///< [s] window of t_c
+    SourceLoc loc;
+};
+
 /// A change of contact-law parameters at a time (gc2d 6.7): e.g. friction switched off.
 struct ChangeDef {
     Real at = 0;                ///< [s]
@@ -126,6 +136,7 @@ struct MachineDefs {
     std::vector<OutletDef> outlets;
     std::vector<BoundaryDef> boundaries;
     GravityDef gravity;
+    SizeScalingDef sizeScaling;
     std::vector<ChangeDef> changes;
     bool any() const noexcept {
         return !drums.empty() || !sources.empty() || !inlets.empty() || !outlets.empty() ||

@@ -163,8 +163,18 @@ void WallSet::setDriver(std::uint32_t index, const WallDriver& driver) {
     std::sort(m_moving.begin(), m_moving.end());
     // Speed bound of every wall point: translation plus rotation about the pivot.
     m_maxSpeed = 0;
-    for (const auto& wall : walls) {
+    m_speedBound.assign(walls.size(), 0);
+    m_activeFrom.assign(walls.size(), 0);
+    m_activeTo.assign(walls.size(), 1e300);
+    for (std::size_t k = 0; k < walls.size(); ++k) {
+        const auto& wall = walls[k];
         const auto& d = wall.driver;
+        if (d.kind == WallDriver::Kind::Vibration) {
+            m_activeFrom[k] = d.from;
+            m_activeTo[k] = d.to;
+        } else if (d.kind == WallDriver::Kind::Piston) {
+            m_activeFrom[k] = d.from;
+        }
         Real v = 0;
         switch (d.kind) {
             case WallDriver::Kind::Fixed:
@@ -188,6 +198,7 @@ void WallSet::setDriver(std::uint32_t index, const WallDriver& driver) {
                 break;
             }
         }
+        m_speedBound[k] = v;
         m_maxSpeed = std::max(m_maxSpeed, v);
     }
 }

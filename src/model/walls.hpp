@@ -104,6 +104,14 @@ struct WallSet {
     }
     /// Upper bound of any wall point's speed [m/s] over the whole run (kept by setDriver).
     Real maxSpeed() const noexcept { return m_maxSpeed; }
+    /// Upper bound of any wall point's speed [m/s] during [t0, t1]: a vibrating wall outside its
+    /// window, or a piston before it starts, rests (neighbour-list and tunnelling checks).
+    Real maxSpeedBetween(Real t0, Real t1) const noexcept {
+        Real v = 0;
+        for (const std::uint32_t w : m_moving)
+            if (t1 > m_activeFrom[w] && t0 < m_activeTo[w]) v = v > m_speedBound[w] ? v : m_speedBound[w];
+        return v;
+    }
     bool anyMoving() const noexcept { return !m_moving.empty(); }
 
     /// Saves the wall state (displacement, rotation, velocities, anchors, piston speed) and the
@@ -114,8 +122,10 @@ struct WallSet {
 
 private:
     void placeWall(Wall& w) noexcept;
-    std::vector<std::uint32_t> m_moving;  ///< walls with a driver other than Fixed, or a lid
-    Real m_maxSpeed = 0;                  ///< [m/s]
+    std::vector<std::uint32_t> m_moving;         ///< walls with a driver other than Fixed, or a lid
+    Real m_maxSpeed = 0;                         ///< [m/s]
+    std::vector<Real> m_speedBound;              ///< [m/s] per wall
+    std::vector<Real> m_activeFrom, m_activeTo;  ///< [s] per wall: when it may move
 };
 
 /// Displacement A(t) [m] and velocity dA/dt [m/s] of a vibration profile (gc2d Eq. B.3, spec 6.4,

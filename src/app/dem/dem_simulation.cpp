@@ -155,6 +155,7 @@ public:
             c.push_back("gravity_x");
             c.push_back("gravity_y");
         }
+        if (m_scene.machines.sizeScaling.present) c.push_back("size_scale");
         if (m_world.flow().active()) {  // particles in and out (cumulative counts and masses)
             for (const char* k :
                  {"particles", "mass", "inserted", "skipped", "removed", "mass_in", "mass_out"})
@@ -195,6 +196,7 @@ public:
             row.push_back(g.x);
             row.push_back(g.y);
         }
+        if (m_scene.machines.sizeScaling.present) row.push_back(m_world.sizeScale());
         if (m_world.flow().active()) {
             const auto& fc = m_world.flow().counters();
             for (const double v : {static_cast<double>(m_world.store().size()), m_world.totalMass(),
