@@ -132,8 +132,8 @@ void checkInsert(Check& c, const model::SceneDef& sc, const model::InsertDef& in
                       "a polygon shape takes its size from its [[shape]]; remove `radius`");
     }
     c.finite(loc, key + ".velocity", {in.velocity.x, in.velocity.y, in.angle, in.omega});
-    if (in.attempts < 1 || in.attempts > 100000)
-        c.d.error(loc, key + ".attempts", fmt::format("must be in [1, 100000], got {}", in.attempts));
+    if (in.attempts < 1 || in.attempts > 1000)
+        c.d.error(loc, key + ".attempts", fmt::format("must be in [1, 1000], got {}", in.attempts));
 }
 
 /// Largest bounding radius an InsertDef can produce [m] (0 if unknown).
@@ -205,6 +205,13 @@ void checkMachineDefs(const model::SceneDef& sc, Diagnostics& d, const std::vect
         c.nonNegative(s.loc, key + ".width", s.width, "m");
         if (s.widthEnd) c.nonNegative(s.loc, key + ".width_end", *s.widthEnd, "m");
         c.positive(s.loc, key + ".interval", s.interval, "s");
+        if (s.interval > 0 && sc.dem.dt > 0 && s.interval < sc.dem.dt)
+            d.error(
+                s.loc, key + ".interval",
+                fmt::format(
+                    "interval {} s is shorter than the time step dt = {} s (more than one drop per step); "
+                    "allowed [dt, inf) = [{}, inf)",
+                    s.interval, sc.dem.dt, sc.dem.dt));
         c.window(s.loc, key + ".from", s.from, s.to);
         if (s.interval > 0 && s.to > s.from && (s.to - s.from) / s.interval > 1e9)
             d.error(s.loc, key + ".interval",

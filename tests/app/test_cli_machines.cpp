@@ -88,6 +88,18 @@ TEST(Cli, SiloMassBalanceHoldsAtEveryRow) {
     EXPECT_EQ(summary["flow"]["removed"].get<double>(), std::stod(last.at("removed")));
 }
 
+TEST(Cli, ResumeWithAChangedLawContinues) {
+    // gc2d 6.7 by restart: friction switched off in the scene given to --resume.
+    test::ScratchDir dir;
+    test::writeText(dir.path / "silo.toml", kSilo);
+    ASSERT_EQ(test::runGranulab("run silo.toml -q --out part --set run.end_time=0.3", dir.path, 300).status,
+              0);
+    const auto r = test::runGranulab("run silo.toml -q --resume part --set contact[0].mu=0.0", dir.path, 300);
+    ASSERT_EQ(r.status, 0) << r.output;
+    std::vector<std::string> header;
+    EXPECT_NEAR(std::stod(test::readCsv(dir.path / "part/series.csv", header).back().at("time")), 0.5, 1e-9);
+}
+
 TEST(Cli, ResumeAcrossInsertionAndRemovalIsBitForBit) {
     test::ScratchDir dir;
     test::writeText(dir.path / "silo.toml", kSilo);
@@ -149,6 +161,14 @@ material = "glass"
          "\"gc2d\"\n"
          "mu = 1.0\n[[material]]\nname = \"steel\"\n",
          {"bad.toml:", "mu", "[0, 1)"}},
+        {"boundary_ccw",
+         "[[boundary]]\npoints = [[0, 0], [1, 0], [1, 1], [0, 1]]\nedges = [[0, 1, \"wall\"], [1, 2, "
+         "\"wall\"], "
+         "[2, 3, \"wall\"], [3, 0, \"outlet\"]]\nmaterial = \"glass\"\n",
+         {"bad.toml:", "boundary[0].edges", "clockwise"}},
+        {"source_interval",
+         "[[source]]\nposition = [0.5, 0.1]\ninterval = 1e-9\nradius = 0.002\nmaterial = \"glass\"\n",
+         {"bad.toml:", "source[0].interval", "allowed [dt, inf)"}},
         {"inlet_outward",
          "[[inlet]]\nedge = [[0.0, 1.0], [1.0, 1.0]]\nrate = 10\nradius = 0.002\n"
          "velocity = [0.0, 1.0]\nmaterial = \"glass\"\n",

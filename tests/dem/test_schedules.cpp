@@ -75,3 +75,24 @@ TEST(GravitySchedule, DirectionTiltsLinearly) {
 
 }  // namespace
 }  // namespace granulab::dem
+
+namespace granulab::dem {
+namespace {
+
+TEST(SizeScaling, MatchesEqB2AtSampleTimes) {
+    SizeCycle c;
+    c.amplitude = 0.05;
+    c.frequency = 2;
+    c.slope = 4;
+    c.t1 = 0.1;
+    c.t2 = 2.0;
+    for (int k = 0; k <= 100; ++k) {
+        const Real t = 2.5 * k / 100.0;
+        const Real tc = std::clamp(t, 0.1, 2.0);
+        const Real expected = 1 + 0.05 * (0.5 - 0.5 * std::tanh(4 * std::cos(2 * kPi * 2 * tc)));
+        EXPECT_NEAR(sizeScale(c, t), expected, 1e-15) << "t = " << t;
+    }
+}
+
+}  // namespace
+}  // namespace granulab::dem
