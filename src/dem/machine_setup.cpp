@@ -73,6 +73,23 @@ model::WallDriver driverOf(const model::WallDef& def, const std::vector<Vec2>& p
     return d;
 }
 
+/// The outlets of [[outlet]] and of [[boundary]] outlet edges, in this order.
+std::vector<model::OutletDef> allOutlets(const model::SceneDef& scene) {
+    std::vector<model::OutletDef> all = scene.machines.outlets;
+    for (const auto& b : scene.machines.boundaries)
+        for (const auto& e : b.edges)
+            if (e.type == "outlet") {
+                model::OutletDef o;
+                o.name = b.name;
+                o.a = b.points[static_cast<std::size_t>(e.from)];
+                o.b = b.points[static_cast<std::size_t>(e.to)];
+                o.openAt = b.openAt;
+                o.material = b.material;
+                all.push_back(o);
+            }
+    return all;
+}
+
 }  // namespace
 
 std::vector<Vec2> placedWallPoints(const model::WallDef& def) {
@@ -176,21 +193,7 @@ model::WallSet buildWalls(const model::SceneDef& scene, const std::vector<std::s
         if (closedLoop) chain.pop_back();
         flush(closedLoop);
     }
-    const auto outlets = [&] {  // outlets of [[outlet]] and of boundaries, in this order
-        std::vector<model::OutletDef> all = scene.machines.outlets;
-        for (const auto& b : scene.machines.boundaries)
-            for (const auto& e : b.edges)
-                if (e.type == "outlet") {
-                    model::OutletDef o;
-                    o.name = b.name;
-                    o.a = b.points[static_cast<std::size_t>(e.from)];
-                    o.b = b.points[static_cast<std::size_t>(e.to)];
-                    o.openAt = b.openAt;
-                    o.material = b.material;
-                    all.push_back(o);
-                }
-        return all;
-    }();
+    const auto outlets = allOutlets(scene);
     for (std::size_t k = 0; k < outlets.size(); ++k) {  // the lid of an outlet that opens later
         const auto& o = outlets[k];
         if (o.isRegion || !(o.openAt > 0)) continue;
@@ -281,17 +284,7 @@ FlowConfig buildFlow(const model::SceneDef& scene, const std::vector<std::string
         q.openAt = o.openAt;
         f.outlets.push_back(q);
     };
-    for (const auto& o : m.outlets) addOutlet(o);
-    for (const auto& b : m.boundaries)
-        for (const auto& e : b.edges)
-            if (e.type == "outlet") {
-                model::OutletDef o;
-                o.name = b.name;
-                o.a = b.points[static_cast<std::size_t>(e.from)];
-                o.b = b.points[static_cast<std::size_t>(e.to)];
-                o.openAt = b.openAt;
-                addOutlet(o);
-            }
+    for (const auto& o : allOutlets(scene)) addOutlet(o);
     for (std::size_t k = 0; k < f.outlets.size(); ++k)
         if (f.outlets[k].name.empty()) f.outlets[k].name = fmt::format("outlet{}", k);
     for (std::size_t k = 0; k < f.inlets.size(); ++k)

@@ -218,42 +218,28 @@ void readChange(TableReader& r, model::ChangeDef& c) {
     s.finish();
 }
 
+/// Reads every [[key]] table into `out` with `read`.
+template <class Def, class Read>
+void readEach(TableReader& root, const char* key, std::vector<Def>& out, Read read) {
+    forEachTable(root, key, [&](TableReader& t, std::size_t) {
+        Def d;
+        read(t, d);
+        out.push_back(std::move(d));
+    });
+}
+
 }  // namespace
 
 void readMachineSections(TableReader& root, model::SceneDef& scene) {
     auto& m = scene.machines;
-    forEachTable(root, "drum", [&](TableReader& t, std::size_t) {
-        model::DrumDef d;
-        readDrum(t, d);
-        m.drums.push_back(d);
-    });
-    forEachTable(root, "source", [&](TableReader& t, std::size_t) {
-        model::SourceDef s;
-        readSource(t, s);
-        m.sources.push_back(s);
-    });
-    forEachTable(root, "inlet", [&](TableReader& t, std::size_t) {
-        model::InletDef in;
-        readInlet(t, in);
-        m.inlets.push_back(in);
-    });
-    forEachTable(root, "outlet", [&](TableReader& t, std::size_t) {
-        model::OutletDef o;
-        readOutlet(t, o);
-        m.outlets.push_back(o);
-    });
-    forEachTable(root, "boundary", [&](TableReader& t, std::size_t) {
-        model::BoundaryDef b;
-        readBoundary(t, b);
-        m.boundaries.push_back(b);
-    });
+    readEach(root, "drum", m.drums, readDrum);
+    readEach(root, "source", m.sources, readSource);
+    readEach(root, "inlet", m.inlets, readInlet);
+    readEach(root, "outlet", m.outlets, readOutlet);
+    readEach(root, "boundary", m.boundaries, readBoundary);
     withTable(root, "gravity", [&](TableReader& t) { readGravity(t, m.gravity); });
     withTable(root, "size_scaling", [&](TableReader& t) { readSizeScaling(t, m.sizeScaling); });
-    forEachTable(root, "change", [&](TableReader& t, std::size_t) {
-        model::ChangeDef c;
-        readChange(t, c);
-        m.changes.push_back(c);
-    });
+    readEach(root, "change", m.changes, readChange);
 }
 
 }  // namespace granulab::io

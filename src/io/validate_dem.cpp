@@ -13,6 +13,7 @@
 #include "core/suggest.hpp"
 #include "geom/polygon.hpp"
 #include "geom/segment.hpp"
+#include "io/range_checks.hpp"
 #include "io/shape_checks.hpp"
 #include "io/validate_machines.hpp"
 #include "model/gc2d_generators.hpp"
@@ -28,12 +29,10 @@ public:
     explicit Checker(Diagnostics& d) : m_diags(d) {}
 
     void positive(const SourceLoc& loc, const std::string& key, Real v, const std::string& unit) {
-        if (!(v > 0) || !std::isfinite(v))
-            m_diags.error(loc, key, fmt::format("must be > 0 [{}], got {}; allowed (0, inf)", unit, v));
+        checkPositive(m_diags, loc, key, v, unit);
     }
     void nonNegative(const SourceLoc& loc, const std::string& key, Real v, const std::string& unit) {
-        if (!(v >= 0) || !std::isfinite(v))
-            m_diags.error(loc, key, fmt::format("must be >= 0 [{}], got {}; allowed [0, inf)", unit, v));
+        checkNonNegative(m_diags, loc, key, v, unit);
     }
     void material(const SourceLoc& loc, const std::string& key, const std::string& name,
                   const std::vector<std::string>& names) {

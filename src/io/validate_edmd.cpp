@@ -9,15 +9,14 @@
 #include <cmath>
 #include <utility>
 
+#include "io/range_checks.hpp"
+
 namespace granulab::io {
 
 void checkEdmdDef(const model::SceneDef& sc, Diagnostics& d) {
     const model::EdmdDef& e = sc.edmd;
     const SourceLoc& loc = e.loc.file.empty() ? sc.run.loc : e.loc;
-    auto positive = [&](const char* key, Real v, const char* unit) {
-        if (!(v > 0) || !std::isfinite(v))
-            d.error(loc, key, fmt::format("must be > 0 [{}], got {}; allowed (0, inf)", unit, v));
-    };
+    auto positive = [&](const char* key, Real v, const char* unit) { checkPositive(d, loc, key, v, unit); };
     auto inRange = [&](const char* key, Real v, Real lo, Real hi, const char* what) {
         if (!(v >= lo && v <= hi))
             d.error(loc, key, fmt::format("must be in [{}, {}] ({}), got {}", lo, hi, what, v));

@@ -11,6 +11,7 @@
 
 #include "core/suggest.hpp"
 #include "geom/polygon.hpp"
+#include "io/range_checks.hpp"
 #include "model/size_bounds.hpp"
 
 namespace granulab::io {
@@ -20,12 +21,10 @@ namespace {
 struct Check {
     Diagnostics& d;
     void positive(const SourceLoc& loc, const std::string& key, Real v, const std::string& unit) {
-        if (!(v > 0) || !std::isfinite(v))
-            d.error(loc, key, fmt::format("must be > 0 [{}], got {}; allowed (0, inf)", unit, v));
+        checkPositive(d, loc, key, v, unit);
     }
     void nonNegative(const SourceLoc& loc, const std::string& key, Real v, const std::string& unit) {
-        if (!(v >= 0) || !std::isfinite(v))
-            d.error(loc, key, fmt::format("must be >= 0 [{}], got {}; allowed [0, inf)", unit, v));
+        checkNonNegative(d, loc, key, v, unit);
     }
     void finite(const SourceLoc& loc, const std::string& key, std::initializer_list<Real> vs) {
         for (const Real v : vs)

@@ -57,7 +57,8 @@ slope = 3.0
 window = [0.0, 1.0]
 )";
     dem::World w = test::makeWorldFromToml(toml);
-    const Real r0 = 0.005, m0 = w.store().mass[0], i0 = 1 / w.store().invInertia[0] / w.sizeScale() / w.sizeScale();
+    const Real r0 = 0.005, m0 = w.store().mass[0],
+               i0 = 1 / w.store().invInertia[0] / w.sizeScale() / w.sizeScale();
     for (int k = 1; k <= 2000; ++k) {
         ASSERT_EQ(w.step(), dem::kStepOk);
         if (k % 20 != 0) continue;
