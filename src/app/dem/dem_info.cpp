@@ -7,12 +7,53 @@
 #include <cmath>
 
 #include "app/dem/dem_engine.hpp"
+#include "dem/machine_setup.hpp"
 #include "dem/setup.hpp"
 #include "dem/step_clock.hpp"
 #include "model/material_names.hpp"
 #include "model/particle_store.hpp"
 
 namespace granulab::app {
+
+namespace {
+
+/// True if a source, an inlet or a boundary inlet inserts particles of `material`.
+bool insertedMaterial(const model::SceneDef& scene, const std::string& material) {
+    const auto& m = scene.machines;
+    return std::any_of(m.sources.begin(), m.sources.end(),
+                       [&](const auto& x) { return x.insert.material == material; }) ||
+           std::any_of(m.inlets.begin(), m.inlets.end(),
+                       [&](const auto& x) { return x.insert.material == material; }) ||
+           std::any_of(m.boundaries.begin(), m.boundaries.end(),
+                       [&](const auto& x) { return x.insert.material == material; });
+}
+
+/// One line per scene machine (docs/scene-format.md "Scene machines").
+void printMachines(const model::SceneDef& scene) {
+    const auto& m = scene.machines;
+    for (const auto& src : m.sources) {
+        const auto drops = static_cast<long long>(std::floor((src.to - src.from) / src.interval)) + 1;
+        fmt::print("source       '{}': {} drops of {} every {:.4g} s from {:.4g} s, {} placement\n", src.name,
+                   drops, src.insert.shape, src.interval, src.from, src.placement);
+    }
+    for (const auto& in : m.inlets)
+        fmt::print("inlet        '{}': {:.4g} particles/s from {:.4g} s\n", in.name, in.rate, in.from);
+    for (const auto& b : m.boundaries)
+        fmt::print("boundary     '{}': {} points, {} edges\n", b.name.empty() ? "boundary" : b.name,
+                   b.points.size(), b.edges.size());
+    for (const auto& o : m.outlets)
+        fmt::print("outlet       '{}': {}, open from {:.4g} s\n", o.name, o.isRegion ? "region" : "edge",
+                   o.openAt);
+    if (m.gravity.present)
+        fmt::print("gravity      {} from {:.4g} to {:.4g} m/s^2 over [{:.4g}, {:.4g}] s\n", m.gravity.type,
+                   m.gravity.g1, m.gravity.g2, m.gravity.t1, m.gravity.t2);
+    if (m.sizeScaling.present)
+        fmt::print("size scaling amplitude {:.4g}, frequency {:.4g} 1/s, slope {:.4g}\n",
+                   m.sizeScaling.amplitude, m.sizeScaling.frequency, m.sizeScaling.slope);
+    for (const auto& c : m.changes) fmt::print("change       contact[{}] at {:.4g} s\n", c.contact, c.at);
+}
+
+}  // namespace
 
 int demInfo(const std::string& scenePath, const model::SceneDef& scene) {
     const dem::PreparedScene v = checkAndPrepareDem(scene);
@@ -47,12 +88,21 @@ int demInfo(const std::string& scenePath, const model::SceneDef& scene) {
                 "mass {:.4g} kg\n",
                 names[m], count, rmin, rmax, polygons ? " (polygons: circumradius)" : "",
                 scene.materials[m].density, scene.dem.massModel == "sphere" ? 3 : 2, mass);
+        else if (insertedMaterial(scene, names[m]))
+            fmt::print("  material {:<12} (inserted by sources or inlets), density {:.4g} kg/m^{}\n",
+                       names[m], scene.materials[m].density, scene.dem.massModel == "sphere" ? 3 : 2);
         else
             fmt::print("  material {:<12} (walls only)\n", names[m]);
     }
-    std::size_t segments = 0;
-    for (const auto& w : scene.walls) segments += w.closed ? w.points.size() : w.points.size() - 1;
-    fmt::print("walls        {} ({} segments)\n", scene.walls.size(), segments);
+    const model::WallSet walls = dem::buildWalls(scene, names);  // walls, drums, boundaries, outlet lids
+    const auto bodies =
+        std::count_if(walls.walls.begin(), walls.walls.end(), [](const auto& w) { return w.body; });
+    const auto moving = std::count_if(walls.walls.begin(), walls.walls.end(), [](const auto& w) {
+        return w.driver.kind != model::WallDriver::Kind::Fixed;
+    });
+    fmt::print("walls        {} ({} segments; {} polygon bodies, {} moving)\n", walls.walls.size(),
+               walls.segments.size(), bodies, moving);
+    printMachines(scene);
     fmt::print("contact laws {}\n", scene.contacts.size());
     for (const auto& c : scene.contacts)
         fmt::print("  {}/{}: normal {}, damping {}, tangential {}, rolling {}\n", c.materialA, c.materialB,
