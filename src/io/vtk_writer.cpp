@@ -238,12 +238,15 @@ void writeParticlesVtp(const std::string& path, const model::ParticleStore& s, d
 }
 
 void writeWallsVtp(const std::string& path, const model::WallSet& w, double time) {
-    const std::size_t n = w.segments.size();
+    std::vector<const model::WallSegment*> drawn;  // a wall that is not solid (an opened lid) is gone
+    for (const auto& seg : w.segments)
+        if (w.walls[seg.wall].solid) drawn.push_back(&seg);
+    const std::size_t n = drawn.size();
     std::vector<double> points(6 * n, 0.0);
     std::vector<std::int64_t> connectivity(2 * n), offsets(n);
     std::vector<std::int32_t> wall(n);
     for (std::size_t k = 0; k < n; ++k) {
-        const model::WallSegment& seg = w.segments[k];
+        const model::WallSegment& seg = *drawn[k];
         points[6 * k] = seg.a.x;
         points[6 * k + 1] = seg.a.y;
         points[6 * k + 3] = seg.b.x;
