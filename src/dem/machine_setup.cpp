@@ -12,6 +12,7 @@
 #include "geom/polygon.hpp"
 #include "model/grain_shapes.hpp"
 #include "model/mass_model.hpp"
+#include "model/size_bounds.hpp"
 
 namespace granulab::dem {
 
@@ -19,12 +20,6 @@ namespace {
 
 std::uint32_t materialIndex(const std::vector<std::string>& names, const std::string& name) {
     return static_cast<std::uint32_t>(std::find(names.begin(), names.end(), name) - names.begin());
-}
-
-Real signedArea(const std::vector<Vec2>& p) {
-    Real a2 = 0;
-    for (std::size_t k = 0; k < p.size(); ++k) a2 += cross(p[k], p[(k + 1) % p.size()]);
-    return 0.5 * a2;
 }
 
 Vec2 rotate(Vec2 v, Real angle) {
@@ -96,13 +91,9 @@ std::vector<Vec2> placedWallPoints(const model::WallDef& def) {
     std::vector<Vec2> p = def.points;
     if (def.angle != 0 && !p.empty()) {  // about the area centroid of a closed polygon, else the mean
         Vec2 c;
-        const Real area = def.closed && p.size() >= 3 ? signedArea(p) : 0;
-        if (std::abs(area) > 0) {
-            for (std::size_t k = 0; k < p.size(); ++k) {
-                const Vec2 a = p[k], b = p[(k + 1) % p.size()];
-                c += (a + b) * cross(a, b);
-            }
-            c = c / (6 * area);
+        const geom::PolygonMass mass = def.closed ? geom::polygonMass(p) : geom::PolygonMass{};
+        if (mass.area != 0) {
+            c = mass.centroid;
         } else {
             for (const Vec2& q : p) c += q;
             c = c / static_cast<Real>(p.size());
@@ -135,7 +126,7 @@ model::WallSet buildWalls(const model::SceneDef& scene, const std::vector<std::s
         const auto mat = materialIndex(names, def.material);
         std::vector<Vec2> points = placedWallPoints(def);
         if (wallIsBody(def)) {
-            if (signedArea(points) < 0) std::reverse(points.begin(), points.end());
+            if (geom::polygonMass(points).area < 0) std::reverse(points.begin(), points.end());
             walls.addPolygon(name, points, mat);
         } else {
             walls.addPolyline(name, points, def.closed, mat, {});
@@ -296,20 +287,11 @@ FlowConfig buildFlow(const model::SceneDef& scene, const std::vector<std::string
 
 Real largestInsertedRadius(const model::SceneDef& scene) {
     Real r = 0;
-    const auto consider = [&](const model::InsertDef& d) {
-        if (d.shape == "disk") {
-            const auto& s = d.radius;
-            r = std::max(r, s.kind == model::SizeDistDef::Kind::Constant ? s.value : s.max);
-            return;
-        }
+    for (const model::InsertDef* d : scene.machines.inserts()) {
+        if (d->shape == "disk") r = std::max(r, model::maxRadius(d->radius));
         for (const auto& s : scene.shapes)
-            if (s.name == d.shape) r = std::max(r, model::maxPlacementRadius(s));
-    };
-    for (const auto& s : scene.machines.sources) consider(s.insert);
-    for (const auto& i : scene.machines.inlets) consider(i.insert);
-    for (const auto& b : scene.machines.boundaries)
-        if (std::any_of(b.edges.begin(), b.edges.end(), [](const auto& e) { return e.type == "inlet"; }))
-            consider(b.insert);
+            if (s.name == d->shape) r = std::max(r, model::maxPlacementRadius(s));
+    }
     return r;
 }
 

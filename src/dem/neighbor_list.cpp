@@ -48,7 +48,6 @@ std::vector<OldHistory> collectHistory(const ContactList& list, const std::vecto
         std::uint32_t a = list.first[k], b = list.second[k];
         if (!oldToNew.empty()) {
             a = oldToNew[a];
-            if (a == kRemovedSlot || (bothAreSlots && oldToNew[b] == kRemovedSlot)) continue;  // removed
             if (bothAreSlots) {
                 b = oldToNew[b];
                 // Exchanging the bodies flips n and t and the relative velocity, so v_t and the
@@ -114,6 +113,13 @@ void fillList(ContactList& list, const std::vector<std::uint64_t>& keys, const s
 }  // namespace
 
 namespace {
+/// The segment a particle-wall pair is keyed by: a convex body wall is one contact per particle,
+/// keyed by the body's first segment (gc2d spec 6.1); a polyline segment is its own.
+std::uint32_t pairSegment(const model::WallSet& walls, std::uint32_t seg) noexcept {
+    const auto& wall = walls.walls[walls.segments[seg].wall];
+    return wall.body ? wall.firstSegment : seg;
+}
+
 /// Keeps the entries k with keep[k] of every per-pair column of `l` (columns may be empty).
 void compactList(ContactList& l, const std::vector<char>& keep, const std::vector<std::uint32_t>& bucketOf) {
     const std::size_t n = l.size();
@@ -232,17 +238,15 @@ void NeighborList::appendParticles(const model::ParticleStore& s, const model::W
             if (dx * dx + dy * dy < reach * reach)
                 pairAdds.push_back({formOf(s.material[j], s.material[k]), j, kk});
         }
-        std::uint32_t lastBody = 0xFFFFFFFFu;
+        std::uint32_t lastKey = 0xFFFFFFFFu;  // a body's segments are consecutive: one pair per body
         for (std::uint32_t g = 0; g < walls.segments.size(); ++g) {
             const auto& seg = walls.segments[g];
-            const auto& wall = walls.walls[seg.wall];
             const Vec2 c{s.x[k], s.y[k]};
             const Vec2 q = seg.a + (seg.b - seg.a) * geom::closestParameter(seg.a, seg.b, c);
             const Real reach = s.radius[k] + margin;
-            if (norm2(c - q) >= reach * reach) continue;
-            const std::uint32_t key = wall.body ? wall.firstSegment : g;  // one pair per body
-            if (wall.body && lastBody == seg.wall) continue;
-            if (wall.body) lastBody = seg.wall;
+            const std::uint32_t key = pairSegment(walls, g);
+            if (norm2(c - q) >= reach * reach || key == lastKey) continue;
+            lastKey = key;
             wallAdds.push_back({formOf(s.material[k], seg.material), kk, key});
         }
     }
@@ -263,14 +267,12 @@ void NeighborList::rebuild(const model::ParticleStore& s, const model::WallSet& 
     broad.findPairs(s, skin, keys);
     fillList(pairs, keys, oldPairs, s, laws, trialHistory, [&](std::uint32_t j) { return s.material[j]; });
     broad.findWallPairs(s, walls, skin, keys);
-    // A convex body wall is one contact per particle: its segments' candidates become one pair,
-    // keyed by the body's first segment (gc2d spec 6.1).
+    // A body wall's segment candidates become one pair per particle (pairSegment).
     bool anyBody = false;
     for (auto& key : keys) {
-        const auto& wall = walls.walls[walls.segments[keySecond(key)].wall];
-        if (!wall.body) continue;
-        key = pairKey(keyFirst(key), wall.firstSegment);
-        anyBody = true;
+        const std::uint32_t seg = pairSegment(walls, keySecond(key));
+        anyBody = anyBody || seg != keySecond(key);
+        key = pairKey(keyFirst(key), seg);
     }
     if (anyBody) {
         std::sort(keys.begin(), keys.end());

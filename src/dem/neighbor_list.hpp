@@ -63,8 +63,7 @@ public:
     }
 
     /// Rebuilds both lists. `oldToNew` (may be empty) maps old slots to new ones when the store
-    /// was just permuted, so that history follows its particles; kRemovedSlot marks a particle
-    /// that was removed (its contacts' history is dropped).
+    /// was just permuted, so that history follows its particles (removal: removeSlots).
     /// `trialHistory` allocates trial springs for integrators with several force evaluations.
     void rebuild(const model::ParticleStore& s, const model::WallSet& walls, Real skin, Real time,
                  BroadPhase& broad, const LawTable& laws, const std::vector<std::uint32_t>& oldToNew,

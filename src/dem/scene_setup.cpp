@@ -244,12 +244,7 @@ PreparedScene prepareScene(const model::SceneDef& scene, Diagnostics& diags) {
         if (o.openAt > 0 && !o.material.empty() && materialOf(o.material) < nm)
             usedByWalls[materialOf(o.material)] = true;
     // Particles that sources and inlets insert take part in the law coverage and time-step advice.
-    std::vector<const model::InsertDef*> inserts;
-    for (const auto& src : machines.sources) inserts.push_back(&src.insert);
-    for (const auto& in : machines.inlets) inserts.push_back(&in.insert);
-    for (const auto& b : machines.boundaries)
-        if (std::any_of(b.edges.begin(), b.edges.end(), [](const auto& e) { return e.type == "inlet"; }))
-            inserts.push_back(&b.insert);
+    const std::vector<const model::InsertDef*> inserts = machines.inserts();
     for (const model::InsertDef* in : inserts) {
         const std::size_t m = materialOf(in->material);
         if (m >= nm) continue;  // reported by validation

@@ -207,15 +207,13 @@ void adviseFaceTimeStep(const LawTable& laws, const InitialParticles& initial,
     }
 }
 
-bool hasPolygons(const model::SceneDef& scene) noexcept {
+bool hasPolygons(const model::SceneDef& scene) {
     for (const auto& p : scene.particles)
         if (p.shape != "disk") return true;
     for (const auto& b : scene.blocks)
         if (b.shape != "disk") return true;
-    for (const auto& s : scene.machines.sources)
-        if (s.insert.shape != "disk") return true;
-    for (const auto& i : scene.machines.inlets)
-        if (i.insert.shape != "disk") return true;
+    for (const model::InsertDef* in : scene.machines.inserts())
+        if (in->shape != "disk") return true;
     for (const auto& h : scene.heaps)  // a named shape or plain rectangles (size)
         if (h.shape != "disk" || h.size.x != 0 || h.size.y != 0) return true;
     return false;

@@ -39,7 +39,7 @@ TimeStepAdvice adviseTimeStep(const LawTable& laws, const std::vector<std::strin
                               const std::vector<bool>& usedByWalls, Real speed);
 
 /// True if some particle or block of the scene uses a polygon [[shape]].
-bool hasPolygons(const model::SceneDef& scene) noexcept;
+bool hasPolygons(const model::SceneDef& scene);
 /// The integrator and broad phase a scene runs with ("auto": gear and sort_and_sweep with
 /// polygons, the gc2d defaults; verlet and cell_grid otherwise).
 std::string integratorOf(const model::SceneDef& scene);

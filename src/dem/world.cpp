@@ -151,22 +151,17 @@ BodyForces World::bodyForcesAt(std::int64_t step) const noexcept {
     return b;
 }
 
-void World::rebuildNeighbors(std::vector<std::uint32_t> oldToNew) {
+void World::rebuildNeighbors() {
+    std::vector<std::uint32_t> oldToNew;
     const int every = m_config.sortEveryRebuilds;
     if (every > 0 && m_list.builds % static_cast<std::uint64_t>(every) == 0) {
         const auto order = m_broad->spatialOrder(m_store);
         if (!order.empty()) {
             m_store.permute(order);
             m_integrator->permute(order);
-            std::vector<std::uint32_t> sorted(order.size());
-            for (std::size_t k = 0; k < order.size(); ++k) sorted[order[k]] = static_cast<std::uint32_t>(k);
-            for (auto& sp : m_config.springs) sp.slot = sorted[sp.slot];
-            if (oldToNew.empty()) {
-                oldToNew = std::move(sorted);
-            } else {  // removal, then the sort: compose (inserted particles have no history)
-                for (auto& k : oldToNew)
-                    if (k != kRemovedSlot) k = sorted[k];
-            }
+            oldToNew.resize(order.size());
+            for (std::size_t k = 0; k < order.size(); ++k) oldToNew[order[k]] = static_cast<std::uint32_t>(k);
+            for (auto& sp : m_config.springs) sp.slot = oldToNew[sp.slot];
         }
     }
     m_scaleAtRebuild = m_scale;

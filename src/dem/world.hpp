@@ -123,8 +123,7 @@ public:
     void loadState(std::istream& is);
 
 private:
-    /// `removed` maps old slots to new ones (kRemovedSlot: removed) after particles left.
-    void rebuildNeighbors(std::vector<std::uint32_t> removed = {});
+    void rebuildNeighbors();
     void evaluateForces(const BodyForces& body, const DriftVelocities& drift, bool trial);
     BodyForces bodyForcesAt(std::int64_t step) const noexcept;
     Vec2 gravityAt(Real t) const noexcept {

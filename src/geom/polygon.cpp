@@ -4,9 +4,22 @@
 // result are crossings of the two boundaries (created where an edge of i is cut).
 #include "geom/polygon.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace granulab::geom {
+
+Real inradiusAbout(const std::vector<Vec2>& ccw, Vec2 centre) noexcept {
+    Real rIn = std::numeric_limits<Real>::infinity();
+    const std::size_t n = ccw.size();
+    for (std::size_t e = 0; e < n; ++e) {
+        const Vec2 a = ccw[e] - centre, b = ccw[(e + 1) % n] - centre;
+        const Real len = norm(b - a);
+        if (len > 0) rIn = std::min(rIn, cross(b - a, -a) / len);
+    }
+    return rIn;
+}
 
 PolygonMass polygonMass(const std::vector<Vec2>& p) noexcept {
     PolygonMass m;

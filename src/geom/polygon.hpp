@@ -20,6 +20,10 @@ struct PolygonMass {
 };
 PolygonMass polygonMass(const std::vector<Vec2>& ccw) noexcept;
 
+/// Largest circle about `centre` inside the convex counter-clockwise polygon: the distance to the
+/// nearest edge line [m] (edges of zero length are skipped; +inf without any edge).
+Real inradiusAbout(const std::vector<Vec2>& ccw, Vec2 centre) noexcept;
+
 /// First problem of a corner list that is not a strictly convex, counter-clockwise, simple
 /// polygon: "" if fine; `corner` is the index of the offending corner.
 struct ShapeProblem {

@@ -48,12 +48,6 @@ struct Check {
     }
 };
 
-Real signedArea(const std::vector<Vec2>& p) {
-    Real a2 = 0;
-    for (std::size_t k = 0; k < p.size(); ++k) a2 += cross(p[k], p[(k + 1) % p.size()]);
-    return 0.5 * a2;
-}
-
 void checkWallMotion(Check& c, const model::WallDef& w, const std::string& key) {
     const bool vib = !w.vibType.empty(), piston = w.pistonForce.has_value();
     const bool moving = w.velocity.x != 0 || w.velocity.y != 0, rotating = w.omega != 0;
@@ -90,7 +84,7 @@ void checkWallMotion(Check& c, const model::WallDef& w, const std::string& key) 
     }
     if (w.kind == "polygon") {
         std::vector<Vec2> p = w.points;
-        if (p.size() >= 3 && signedArea(p) < 0) std::reverse(p.begin(), p.end());
+        if (p.size() >= 3 && geom::polygonMass(p).area < 0) std::reverse(p.begin(), p.end());
         const auto problem = geom::checkConvexPolygon(p);
         if (!problem.ok())
             c.d.error(
@@ -318,7 +312,7 @@ void checkMachineDefs(const model::SceneDef& sc, Diagnostics& d, const std::vect
         if (loop) {
             std::vector<Vec2> ring;
             for (const auto& e : b.edges) ring.push_back(b.points[static_cast<std::size_t>(e.from)]);
-            const Real area = signedArea(ring);
+            const Real area = geom::polygonMass(ring).area;
             if (!b.obstacle && area > 0)
                 d.error(
                     b.loc, key + ".edges",

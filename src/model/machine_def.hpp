@@ -138,6 +138,19 @@ struct MachineDefs {
     GravityDef gravity;
     SizeScalingDef sizeScaling;
     std::vector<ChangeDef> changes;
+    /// What every source, inlet and boundary with inlet edges inserts, in this order.
+    std::vector<const InsertDef*> inserts() const {
+        std::vector<const InsertDef*> out;
+        for (const auto& s : sources) out.push_back(&s.insert);
+        for (const auto& i : inlets) out.push_back(&i.insert);
+        for (const auto& b : boundaries)
+            for (const auto& e : b.edges)
+                if (e.type == "inlet") {
+                    out.push_back(&b.insert);
+                    break;
+                }
+        return out;
+    }
     bool any() const noexcept {
         return !drums.empty() || !sources.empty() || !inlets.empty() || !outlets.empty() ||
                !boundaries.empty() || gravity.present || !changes.empty();

@@ -24,13 +24,7 @@ std::uint32_t ShapePool::add(const std::vector<Vec2>& ccw) {
         rOut = std::max(rOut, norm(p - m.centroid));
     }
     // Inscribed radius about the centroid: distance to the nearest edge line (convex polygon).
-    Real rIn = rOut;
-    const std::size_t n = ccw.size();
-    for (std::size_t e = 0; e < n; ++e) {
-        const Vec2 a = ccw[e] - m.centroid, b = ccw[(e + 1) % n] - m.centroid;
-        const Real len = norm(b - a);
-        if (len > 0) rIn = std::min(rIn, cross(b - a, -a) / len);
-    }
+    const Real rIn = std::min(rOut, geom::inradiusAbout(ccw, m.centroid));
     area.push_back(m.area);
     secondMoment.push_back(m.secondMoment);
     circumradius.push_back(rOut);

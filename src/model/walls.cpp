@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "core/binary_io.hpp"
+#include "geom/polygon.hpp"
 
 namespace granulab::model {
 
@@ -135,21 +136,8 @@ void WallSet::addPolygon(const std::string& name, const std::vector<Vec2>& ccwCo
     Wall& w = walls.back();
     w.body = true;
     // Centroid and inradius about it (gc2d: an immovable particle; the closest-feature code needs both).
-    Real area2 = 0;
-    Vec2 c;
-    const std::size_t n = ccwCorners.size();
-    for (std::size_t k = 0; k < n; ++k) {
-        const Vec2 p = ccwCorners[k], q = ccwCorners[(k + 1) % n];
-        const Real cr = cross(p, q);
-        area2 += cr;
-        c += (p + q) * cr;
-    }
-    c = c / (3 * area2);
-    Real inradius = 1e300;
-    for (std::size_t k = 0; k < n; ++k) {
-        const Vec2 p = ccwCorners[k], q = ccwCorners[(k + 1) % n];
-        inradius = std::min(inradius, cross(q - p, c - p) / norm(q - p));
-    }
+    const Vec2 c = geom::polygonMass(ccwCorners).centroid;
+    const Real inradius = geom::inradiusAbout(ccwCorners, c);
     bodyCentroid.back() = c;
     bodyCentroid0.back() = c;
     bodyInradius.back() = std::max<Real>(inradius, 0);

@@ -19,13 +19,9 @@ namespace {
 
 /// True if a source, an inlet or a boundary inlet inserts particles of `material`.
 bool insertedMaterial(const model::SceneDef& scene, const std::string& material) {
-    const auto& m = scene.machines;
-    return std::any_of(m.sources.begin(), m.sources.end(),
-                       [&](const auto& x) { return x.insert.material == material; }) ||
-           std::any_of(m.inlets.begin(), m.inlets.end(),
-                       [&](const auto& x) { return x.insert.material == material; }) ||
-           std::any_of(m.boundaries.begin(), m.boundaries.end(),
-                       [&](const auto& x) { return x.insert.material == material; });
+    const auto inserts = scene.machines.inserts();
+    return std::any_of(inserts.begin(), inserts.end(),
+                       [&](const auto* x) { return x->material == material; });
 }
 
 /// One line per scene machine (docs/scene-format.md "Scene machines").
