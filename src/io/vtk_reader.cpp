@@ -148,6 +148,13 @@ private:
     std::vector<ArrayInfo> m_arrays;
 };
 
+/// Array `name` if the file has it, else `count` zeros (arrays that older or gas files lack).
+template <class T>
+std::vector<T> optionalArray(const VtpFile& f, const std::string& section, const std::string& name,
+                             const char* type, std::size_t count) {
+    return f.has(section, name) ? f.read<T>(section, name, type, 1) : std::vector<T>(count, T{});
+}
+
 double readTime(const VtpFile& f) {
     const auto t = f.read<double>("FieldData", "TimeValue", "Float64", 1);
     if (t.size() != 1) f.fail("TimeValue must hold one value");
@@ -167,9 +174,29 @@ ParticleFrame readParticlesVtp(const std::string& path) {
     const auto angle = f.has("PointData", "angle") ? f.read<double>("PointData", "angle", "Float64", 1)
                                                    : std::vector<double>(nPoints, 0.0);
     const auto id = f.read<std::int64_t>("PointData", "id", "Int64", 1);
+    const auto velocity = f.read<double>("PointData", "velocity", "Float64", 3);
+    const auto omega = optionalArray<double>(f, "PointData", "omega", "Float64", nPoints);
+    const auto mass = optionalArray<double>(f, "PointData", "mass", "Float64", nPoints);
+    const auto material = optionalArray<std::int32_t>(f, "PointData", "material", "Int32", nPoints);
     if (radius.size() != nPoints || speed.size() != nPoints || angle.size() != nPoints ||
-        id.size() != nPoints)
+        id.size() != nPoints || velocity.size() != 3 * nPoints || omega.size() != nPoints ||
+        mass.size() != nPoints || material.size() != nPoints)
         f.fail("point data arrays differ in length from Points");
+    // The values of one grain, read at point p (disks) or from the cell data (polygons).
+    const auto pushGrain = [&frame](Vec2 c, double r, double sp, double ang, std::int64_t gid, Vec2 v,
+                                    double w, double m, std::int32_t mat) {
+        frame.x.push_back(c.x);
+        frame.y.push_back(c.y);
+        frame.radius.push_back(r);
+        frame.speed.push_back(sp);
+        frame.angle.push_back(ang);
+        frame.id.push_back(gid);
+        frame.vx.push_back(v.x);
+        frame.vy.push_back(v.y);
+        frame.omega.push_back(w);
+        frame.mass.push_back(m);
+        frame.material.push_back(mat);
+    };
     const auto pointIndex = [&](std::int64_t p) {
         if (p < 0 || static_cast<std::uint64_t>(p) >= nPoints) f.fail("cell point index out of range");
         return static_cast<std::size_t>(p);
@@ -183,12 +210,8 @@ ParticleFrame readParticlesVtp(const std::string& path) {
         if (vertOffsets[c] != static_cast<std::int64_t>(c + 1) || c >= vertConnectivity.size())
             f.fail("vertex cells must hold one point each");
         const std::size_t p = pointIndex(vertConnectivity[c]);
-        frame.x.push_back(points[3 * p]);
-        frame.y.push_back(points[3 * p + 1]);
-        frame.radius.push_back(radius[p]);
-        frame.speed.push_back(speed[p]);
-        frame.angle.push_back(angle[p]);
-        frame.id.push_back(id[p]);
+        pushGrain({points[3 * p], points[3 * p + 1]}, radius[p], speed[p], angle[p], id[p],
+                  {velocity[3 * p], velocity[3 * p + 1]}, omega[p], mass[p], material[p]);
         frame.cornerStart.push_back(frame.corners.size());
     }
     if (vertConnectivity.size() != disks) f.fail("vertex cells must hold one point each");
@@ -203,8 +226,13 @@ ParticleFrame readParticlesVtp(const std::string& path) {
     const auto cellSpeed = f.read<double>("CellData", "speed", "Float64", 1);
     const auto cellAngle = f.read<double>("CellData", "angle", "Float64", 1);
     const auto cellId = f.read<std::int64_t>("CellData", "id", "Int64", 1);
+    const auto cellVelocity = f.read<double>("CellData", "velocity", "Float64", 3);
+    const auto cellOmega = optionalArray<double>(f, "CellData", "omega", "Float64", cells);
+    const auto cellMass = optionalArray<double>(f, "CellData", "mass", "Float64", cells);
+    const auto cellMaterial = optionalArray<std::int32_t>(f, "CellData", "material", "Int32", cells);
     if (position.size() != 3 * cells || cellRadius.size() != cells || cellSpeed.size() != cells ||
-        cellAngle.size() != cells || cellId.size() != cells)
+        cellAngle.size() != cells || cellId.size() != cells || cellVelocity.size() != 3 * cells ||
+        cellOmega.size() != cells || cellMass.size() != cells || cellMaterial.size() != cells)
         f.fail("cell data arrays differ in length from the cell count");
     std::int64_t start = 0;
     for (std::size_t k = 0; k < polyOffsets.size(); ++k) {
@@ -216,12 +244,9 @@ ParticleFrame readParticlesVtp(const std::string& path) {
             frame.corners.push_back({points[3 * p], points[3 * p + 1]});
         }
         const std::size_t c = disks + k;
-        frame.x.push_back(position[3 * c]);
-        frame.y.push_back(position[3 * c + 1]);
-        frame.radius.push_back(cellRadius[c]);
-        frame.speed.push_back(cellSpeed[c]);
-        frame.angle.push_back(cellAngle[c]);
-        frame.id.push_back(cellId[c]);
+        pushGrain({position[3 * c], position[3 * c + 1]}, cellRadius[c], cellSpeed[c], cellAngle[c],
+                  cellId[c], {cellVelocity[3 * c], cellVelocity[3 * c + 1]}, cellOmega[c], cellMass[c],
+                  cellMaterial[c]);
         frame.cornerStart.push_back(frame.corners.size());
         start = end;
     }
@@ -236,6 +261,9 @@ WallFrame readWallsVtp(const std::string& path) {
     const auto connectivity = f.read<std::int64_t>("Lines", "connectivity", "Int64", 1);
     const auto offsets = f.read<std::int64_t>("Lines", "offsets", "Int64", 1);
     const auto nPoints = static_cast<std::int64_t>(points.size() / 3);
+    const auto wall = f.has("CellData", "wall") ? f.read<std::int32_t>("CellData", "wall", "Int32", 1)
+                                                : std::vector<std::int32_t>(offsets.size(), 0);
+    if (wall.size() != offsets.size()) f.fail("cell data `wall` differs in length from the line count");
     WallFrame frame;
     std::int64_t start = 0;
     for (const std::int64_t end : offsets) {
@@ -245,6 +273,7 @@ WallFrame readWallsVtp(const std::string& path) {
         if (ia < 0 || ib < 0 || ia >= nPoints || ib >= nPoints) f.fail("line point index out of range");
         frame.a.push_back({points[3 * ia], points[3 * ia + 1]});
         frame.b.push_back({points[3 * ib], points[3 * ib + 1]});
+        frame.wall.push_back(wall[frame.wall.size()]);
         start = end;
     }
     return frame;

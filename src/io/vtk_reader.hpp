@@ -6,30 +6,18 @@
 #include <string>
 #include <vector>
 
+#include "analysis/dem_frame.hpp"
 #include "core/types.hpp"
 
 namespace granulab::io {
 
 /// Particle columns of one snapshot, in file cell order: the disks (vertex cells), then the
-/// polygons (polygon cells; files written before polygons existed have none).
-struct ParticleFrame {
-    double time = 0;                                 ///< [s]
-    std::vector<double> x, y, radius, speed, angle;  ///< [m], [m], [m] (polygons: circumradius), [m/s], [rad]
-    std::vector<std::int64_t> id;
-    /// Polygon outlines: the world corners (counter-clockwise) of particle i are
-    /// corners[cornerStart[i] .. cornerStart[i + 1]); an empty range is a disk. size() + 1 entries.
-    std::vector<std::size_t> cornerStart{0};
-    std::vector<Vec2> corners;  ///< [m]
+/// polygons (polygon cells; files written before polygons existed have none). Arrays a file
+/// lacks (edmd gas snapshots: angle, omega, mass, material) are filled with 0.
+using ParticleFrame = analysis::GrainFrame;
 
-    std::size_t size() const noexcept { return x.size(); }
-    std::size_t cornerCount(std::size_t i) const noexcept { return cornerStart[i + 1] - cornerStart[i]; }
-    bool isPolygon(std::size_t i) const noexcept { return cornerCount(i) > 0; }
-};
-
-/// Wall segments of one snapshot.
-struct WallFrame {
-    std::vector<Vec2> a, b;  ///< [m] segment end points
-};
+/// Wall segments of one snapshot, with the wall index of each.
+using WallFrame = analysis::WallSegments;
 
 /// One DataSet line of a .pvd collection.
 struct PvdEntry {
