@@ -15,15 +15,15 @@ namespace granulab::analysis {
 
 /// The grains of one snapshot, in file order: disks first, then polygons (io/vtk_writer.hpp).
 struct GrainFrame {
-    double time = 0;                   ///< [s]
-    std::vector<std::int64_t> id;      ///< global particle id (creation order)
-    std::vector<double> x, y;          ///< [m] centre of mass
-    std::vector<double> vx, vy;        ///< [m/s]
-    std::vector<double> omega;         ///< [rad/s] counter-clockwise
-    std::vector<double> angle;         ///< [rad] counter-clockwise
-    std::vector<double> radius;        ///< [m] disk radius; polygons: circumradius about the centre
-    std::vector<double> speed;         ///< [m/s]
-    std::vector<double> mass;          ///< [kg] (2D: areal density x area)
+    double time = 0;                     ///< [s]
+    std::vector<std::int64_t> id;        ///< global particle id (creation order)
+    std::vector<double> x, y;            ///< [m] centre of mass
+    std::vector<double> vx, vy;          ///< [m/s]
+    std::vector<double> omega;           ///< [rad/s] counter-clockwise
+    std::vector<double> angle;           ///< [rad] counter-clockwise
+    std::vector<double> radius;          ///< [m] disk radius; polygons: circumradius about the centre
+    std::vector<double> speed;           ///< [m/s]
+    std::vector<double> mass;            ///< [kg] (2D: areal density x area)
     std::vector<std::int32_t> material;  ///< material index of the scene
     /// Polygon outlines: the world corners (counter-clockwise) of grain i are
     /// corners[cornerStart[i] .. cornerStart[i + 1]); an empty range is a disk. size() + 1 entries.
@@ -43,17 +43,17 @@ struct GrainFrame {
 /// both applied at the contact point; fn = -F.n > 0 for a repulsive contact, ft = F.t with
 /// t = perp(n) = (-ny, nx).
 struct ContactFrame {
-    double time = 0;                     ///< [s]
-    std::vector<std::int64_t> a, b;      ///< particle ids (b = -1 at a wall)
-    std::vector<std::int32_t> wall;      ///< wall index of the scene, -1 for grain pairs
-    std::vector<double> px, py;          ///< [m] contact point (area law: middle of the contact line)
-    std::vector<double> nx, ny;          ///< unit normal from a toward b
-    std::vector<double> fx, fy;          ///< [N] force on a (2D: per metre of depth is the
-                                         ///< same number, the thesis' N/m convention)
-    std::vector<double> fn, ft;          ///< [N] normal (repulsive > 0) and tangential components
-    std::vector<double> depth;           ///< [m] overlap depth (area law: A / l, Eq. 2.15)
-    std::vector<double> area;            ///< [m^2] overlap area (disks: the lens or circle segment)
-    std::vector<double> length;          ///< [m] length of the contact line (chord of the overlap)
+    double time = 0;                 ///< [s]
+    std::vector<std::int64_t> a, b;  ///< particle ids (b = -1 at a wall)
+    std::vector<std::int32_t> wall;  ///< wall index of the scene, -1 for grain pairs
+    std::vector<double> px, py;      ///< [m] contact point (area law: middle of the contact line)
+    std::vector<double> nx, ny;      ///< unit normal from a toward b
+    std::vector<double> fx, fy;      ///< [N] force on a (2D: per metre of depth is the
+                                     ///< same number, the thesis' N/m convention)
+    std::vector<double> fn, ft;      ///< [N] normal (repulsive > 0) and tangential components
+    std::vector<double> depth;       ///< [m] overlap depth (area law: A / l, Eq. 2.15)
+    std::vector<double> area;        ///< [m^2] overlap area (disks: the lens or circle segment)
+    std::vector<double> length;      ///< [m] length of the contact line (chord of the overlap)
 
     std::size_t size() const noexcept { return a.size(); }
     bool atWall(std::size_t k) const noexcept { return wall[k] >= 0; }
@@ -61,8 +61,8 @@ struct ContactFrame {
 
 /// The wall segments of one snapshot.
 struct WallSegments {
-    std::vector<Vec2> a, b;           ///< [m] end points
-    std::vector<std::int32_t> wall;   ///< wall index of each segment (the scene's [[wall]] order)
+    std::vector<Vec2> a, b;          ///< [m] end points
+    std::vector<std::int32_t> wall;  ///< wall index of each segment (the scene's [[wall]] order)
     std::size_t size() const noexcept { return a.size(); }
 };
 
