@@ -7,7 +7,7 @@ Usage:
 TABLE is a file name in the folder, with or without .csv, or a path; without any, every
 *.csv of the folder whose header is in the table format is plotted (others are skipped with a
 note). Table format (docs/plots.md): optional leading "# " notes ("# key = value unit" results,
-any other note is a warning), a header of "name [unit]" cells (unit "1" for pure numbers),
+a note starting with "warning" is a warning; others are remarks), a header of "name [unit]" cells (unit "1" for pure numbers),
 then numeric rows ("nan" allowed). The file stem is the table name.
 
 Generic rules, applied to any table:
@@ -89,8 +89,8 @@ def read_table(path, np):
         m = RESULT_NOTE.match(text)
         if m:
             results.append((m.group("key"), float(m.group("value")), m.group("unit") or ""))
-        else:
-            warnings.append(text)
+        elif text.lower().startswith("warning") or "fewer than" in text:
+            warnings.append(text)  # other notes are remarks (settings, formulas): kept, not printed
     if k == len(lines):
         raise InputError(f"{path}: no header line (expected cells \"name [unit]\")")
     header_line = k + 1

@@ -37,17 +37,21 @@ struct ScratchDir {
     std::filesystem::path path;
     ScratchDir() {
         const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        path =
-            std::filesystem::temp_directory_path() / (std::string("granulab_") + info->test_suite_name() +
-                                                      "_" + info->name() + "_" + std::to_string(::getpid()));
-        std::filesystem::remove_all(path);
-        std::filesystem::create_directories(path);
+        make(std::string(info->test_suite_name()) + "_" + info->name());
     }
+    /// Outside a test body (SetUpTestSuite), where there is no current test to name the folder.
+    explicit ScratchDir(const std::string& name) { make(name); }
     ~ScratchDir() {
         std::error_code ec;
         std::filesystem::remove_all(path, ec);
     }
     ScratchDir(const ScratchDir&) = delete;
+    void make(const std::string& name) {
+        path =
+            std::filesystem::temp_directory_path() / ("granulab_" + name + "_" + std::to_string(::getpid()));
+        std::filesystem::remove_all(path);
+        std::filesystem::create_directories(path);
+    }
     ScratchDir& operator=(const ScratchDir&) = delete;
 };
 

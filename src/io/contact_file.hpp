@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The contact file of a DEM snapshot (gc2d spec section 7; docs/output-format.md "Contacts"):
+// The contact file of a DEM snapshot (gc2d spec section 7; docs/analysis.md "The contact files"):
 // vtk/contacts_NNNNNN.npy, a NumPy structured array (format version 1.0, little endian, packed
 // fields, one record of 108 bytes per contact) that `numpy.load` reads directly:
 //   a <i8, b <i8 (particle ids; b = -1 at a wall), wall <i4 (wall index, -1 for grain pairs),

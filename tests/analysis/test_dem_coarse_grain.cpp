@@ -47,7 +47,7 @@ TEST(DemCoarseGrain, GaussLegendreIsExactForPolynomials) {
 void randomContacts(analysis::GrainFrame& f, analysis::ContactFrame& c, unsigned seed) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<Real> u(0, 1e-2), unit(-1, 1), mid(0.3, 0.7);
-    for (int i = 0; i < 40; ++i) test::addDisk(f, u(rng), u(rng), 1e-3, 1e-3);
+    for (int i = 0; i < 40; ++i) test::appendDisk(f, u(rng), u(rng), 1e-3, 1e-3);
     for (int k = 0; k < 120; ++k) {
         const auto a = static_cast<std::size_t>(rng() % 40), b = static_cast<std::size_t>(rng() % 40);
         if (a == b) continue;
@@ -109,8 +109,8 @@ TEST(DemCoarseGrain, ContactVirialAndDensity) {
     // Two disks pressed together with f along x: int sigma^c_xx dA = f d (compressive-positive),
     // the other components 0; int rho dA = total mass.
     analysis::GrainFrame f;
-    test::addDisk(f, 0, 0, 1e-3, 2e-3);
-    test::addDisk(f, 2e-3, 0, 1e-3, 3e-3);
+    test::appendDisk(f, 0, 0, 1e-3, 2e-3);
+    test::appendDisk(f, 2e-3, 0, 1e-3, 3e-3);
     f.vx[1] = 0.5;
     analysis::ContactFrame c;
     const Real force = 0.7;

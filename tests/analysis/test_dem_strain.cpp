@@ -23,8 +23,8 @@ TEST(DemStrain, AffineDeformationGivesBackNuAndE) {
     for (int j = 0; j < 40; ++j)
         for (int i = 0; i < 40; ++i) {
             const Real x = (i + 0.5) * a, y = (j + 0.5) * a;
-            test::addDisk(loaded, x, y, 0.5 * a, 1);
-            test::addDisk(reference, x * (1 + exx), y * (1 + ezz), 0.5 * a, 1);
+            test::appendDisk(loaded, x, y, 0.5 * a, 1);
+            test::appendDisk(reference, x * (1 + exx), y * (1 + ezz), 0.5 * a, 1);
         }
     std::swap(reference.x[0], reference.x[1]);  // ids, not order, match the grains
     std::swap(reference.y[0], reference.y[1]);
@@ -62,7 +62,7 @@ TEST(DemStrain, AffineDeformationGivesBackNuAndE) {
 
 TEST(DemStrain, RejectsMismatchedStressGrid) {
     analysis::GrainFrame f;
-    test::addDisk(f, 0, 0, 1, 1);
+    test::appendDisk(f, 0, 0, 1, 1);
     analysis::StressGrid s;
     s.grid = {0, 0, 1, 1, 1, 1, 2, 2};
     EXPECT_THROW(analysis::strainGrid(f, f, s), std::invalid_argument);

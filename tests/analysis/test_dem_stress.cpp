@@ -37,7 +37,7 @@ void squareStack(analysis::GrainFrame& f, analysis::ContactFrame& c, Real angle 
     for (std::size_t j = 0; j < kNy; ++j)
         for (std::size_t i = 0; i < kNx; ++i) {
             const Vec2 p = at({(2 * static_cast<Real>(i) + 1) * kR, (2 * static_cast<Real>(j) + 1) * kR});
-            test::addDisk(f, p.x, p.y, kR, kW / 9.81);
+            test::appendDisk(f, p.x, p.y, kR, kW / 9.81);
         }
     for (std::size_t j = 0; j < kNy; ++j)
         for (std::size_t i = 0; i < kNx; ++i) {

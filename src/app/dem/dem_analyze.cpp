@@ -208,12 +208,16 @@ struct Frame {
 
 Frame loadFrame(const SnapshotFiles& s) {
     Frame f;
-    f.grains = io::readParticlesVtp(s.particles.string());
-    if (!s.walls.empty()) f.walls = io::readWallsVtp(s.walls.string());
-    if (!s.contacts.empty()) {
-        f.contacts = io::readContactsNpy(s.contacts.string());
-        f.contacts.time = f.grains.time;
-        f.hasContacts = true;
+    try {  // a missing or damaged snapshot file is bad input (exit status 2), named by the reader
+        f.grains = io::readParticlesVtp(s.particles.string());
+        if (!s.walls.empty()) f.walls = io::readWallsVtp(s.walls.string());
+        if (!s.contacts.empty()) {
+            f.contacts = io::readContactsNpy(s.contacts.string());
+            f.contacts.time = f.grains.time;
+            f.hasContacts = true;
+        }
+    } catch (const std::runtime_error& e) {
+        badOption(fmt::format("snapshot {}", s.index), e.what());
     }
     const std::size_t n = f.grains.size();
     double area = 0, mass = 0, diameter = 0;
@@ -503,11 +507,16 @@ private:
         p.width = m_opt.kernelWidth > 0
                       ? m_opt.kernelWidth
                       : (p.kernel == analysis::CoarseKernel::Lucy ? 2.0 : 0.5) * m_frame.meanDiameter;
-        const double dx = m_frame.meanDiameter;
-        const auto nx = static_cast<std::size_t>(std::ceil((m_frame.hi.x - m_frame.lo.x) / dx)) + 1;
-        const auto ny = static_cast<std::size_t>(std::ceil((m_frame.hi.y - m_frame.lo.y) / dx)) + 1;
+        // Grid spacing one mean diameter, over the grains' box widened by the kernel's reach (the
+        // fields do not end at the outermost centres).
+        const double dx = m_frame.meanDiameter, reach = analysis::kernelCutoff(p);
+        const Vec2 origin = m_frame.lo - Vec2{reach, reach};
+        const auto nx =
+            static_cast<std::size_t>(std::ceil((m_frame.hi.x - m_frame.lo.x + 2 * reach) / dx)) + 1;
+        const auto ny =
+            static_cast<std::size_t>(std::ceil((m_frame.hi.y - m_frame.lo.y + 2 * reach) / dx)) + 1;
         if (nx * ny > 4'000'000) badOption("coarse", "more than 4e6 grid points; raise --kernel-width");
-        const auto points = analysis::gridPoints(m_frame.lo, dx, dx, nx, ny);
+        const auto points = analysis::gridPoints(origin, dx, dx, nx, ny);
         const auto fields = analysis::coarseGrain(m_frame.grains, m_frame.contacts, points, p);
         write(analysis::coarseGrainTable(fields, p));
         say(fmt::format("coarse: {} x {} points, {} kernel of width {:.4g} m", nx, ny, m_opt.kernel,
