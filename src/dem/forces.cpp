@@ -24,8 +24,8 @@ using detail::kDepthForm;
 
 void computeForces(model::ParticleStore& s, const model::WallSet& walls, NeighborList& list,
                    const LawTable& laws, const BodyForces& body, const DriftVelocities& drift, Real dt,
-                   bool trialHistory, ForceStats& stats, std::vector<Vec2>& wallForce,
-                   ShapeContext& shapes) noexcept {
+                   bool trialHistory, ForceStats& stats, std::vector<Vec2>& wallForce, ShapeContext& shapes,
+                   ContactLog* log) noexcept {
     GL_ASSERT(wallForce.size() == walls.walls.size(), "one force per wall");
     const std::size_t n = s.size();
     for (std::size_t i = 0; i < n; ++i) {
@@ -45,6 +45,7 @@ void computeForces(model::ParticleStore& s, const model::WallSet& walls, Neighbo
             s.torque[i] += cross(arm, f);
         }
     stats = ForceStats{};
+    if (log) log->records.clear();
     for (auto& w : wallForce) w = Vec2{};
     if (trialHistory) {  // every evaluation of a step starts from the accepted history
         for (auto* l : {&list.pairs, &list.wallPairs}) {
@@ -60,14 +61,15 @@ void computeForces(model::ParticleStore& s, const model::WallSet& walls, Neighbo
             using D = std::remove_pointer_t<decltype(dT)>;
             using T = std::remove_pointer_t<decltype(tT)>;
             if constexpr (kAreaForm<N, D, T>) {
-                detail::areaPairs<N, D, T>(s, list.pairs, b, e, laws, drift, dt, trialHistory, stats, shapes);
+                detail::areaPairs<N, D, T>(s, list.pairs, b, e, laws, drift, dt, trialHistory, stats, shapes,
+                                           log);
             } else if constexpr (kDepthForm<N, D, T>) {
                 if (laws.hasRolling())
                     detail::diskPairs<N, D, T, true>(s, list.pairs, b, e, laws, drift, dt, body.overlapGuard,
-                                                     trialHistory, stats);
+                                                     trialHistory, stats, log);
                 else
                     detail::diskPairs<N, D, T, false>(s, list.pairs, b, e, laws, drift, dt, body.overlapGuard,
-                                                      trialHistory, stats);
+                                                      trialHistory, stats, log);
             }
         });
     detail::forEachBucket(list.wallPairs, laws,
@@ -77,10 +79,10 @@ void computeForces(model::ParticleStore& s, const model::WallSet& walls, Neighbo
                               using T = std::remove_pointer_t<decltype(tT)>;
                               if constexpr (kAreaForm<N, D, T>)
                                   detail::areaWalls<N, D, T>(s, walls, list.wallPairs, b, e, laws, drift, dt,
-                                                             trialHistory, stats, wallForce, shapes);
+                                                             trialHistory, stats, wallForce, shapes, log);
                               else if constexpr (kDepthForm<N, D, T>)
                                   detail::diskWalls<N, D, T>(s, walls, list.wallPairs, b, e, laws, drift, dt,
-                                                             trialHistory, stats, wallForce);
+                                                             trialHistory, stats, wallForce, log);
                           });
 }
 

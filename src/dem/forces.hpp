@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "dem/contact_log.hpp"
 #include "dem/integrator.hpp"
 #include "dem/law_table.hpp"
 #include "dem/neighbor_list.hpp"
@@ -73,10 +74,11 @@ struct ForceStats {
 /// writes: f, torque, list histories (and feature caches), stats, shapes (world corners),
 /// wallForce[w] = total contact force [N] the particles exert on wall w (size = wall count).
 /// `shapes`: polygon shapes (contacts of the gc2d area law; may be empty for disk-only scenes).
+/// `log`: when given, cleared and filled with every touching contact's record (snapshot steps).
 void computeForces(model::ParticleStore& s, const model::WallSet& walls, NeighborList& list,
                    const LawTable& laws, const BodyForces& body, const DriftVelocities& drift, Real dt,
-                   bool trialHistory, ForceStats& stats, std::vector<Vec2>& wallForce,
-                   ShapeContext& shapes) noexcept;
+                   bool trialHistory, ForceStats& stats, std::vector<Vec2>& wallForce, ShapeContext& shapes,
+                   ContactLog* log = nullptr) noexcept;
 
 /// Elastic energy [J] stored in all contacts (normal, tangential and rolling springs); no side effects.
 /// For the gc2d area law, whose force has no potential in general, the normal part is estimated

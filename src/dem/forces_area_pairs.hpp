@@ -33,7 +33,7 @@ inline void assertAreaBucket([[maybe_unused]] const ContactList& list, [[maybe_u
 template <class N, class D, class T>
 void areaPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, std::uint32_t end,
                const LawTable& laws, const DriftVelocities& drift, Real dt, bool trialHistory,
-               ForceStats& stats, ShapeContext& sc) noexcept {
+               ForceStats& stats, ShapeContext& sc, ContactLog* log) noexcept {
     const std::uint32_t nm = laws.materialCount();
     const ContactLaw* table = laws.laws().data();
     Real* xiHist = trialHistory ? list.xiTrial.data() : list.xi.data();
@@ -88,6 +88,9 @@ void areaPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
                 s.torque[i] += cross(c.ri, f.onI);
                 s.torque[j] -= cross(c.rj, f.onI);
             }
+            if (log)  // normal from i toward j: the geometry's normal pushes i away from j
+                log->addArea(s.id[i], s.id[j], -1, c.g.point, -c.g.normal, f.onI, f.overlapDepth, c.g.area,
+                             norm(c.g.c2 - c.g.c1));
             const Real rMin = std::min(s.radius[i], s.radius[j]);
             if (f.overlapDepth > maxRel * rMin)
                 maxRel = f.overlapDepth / rMin;  // divide only for a new maximum
@@ -125,8 +128,8 @@ void areaPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
 template <class N, class D, class T>
 void areaWalls(model::ParticleStore& s, const model::WallSet& walls, ContactList& list, std::uint32_t begin,
                std::uint32_t end, const LawTable& laws, const DriftVelocities& drift, Real dt,
-               bool trialHistory, ForceStats& stats, std::vector<Vec2>& wallForce,
-               ShapeContext& sc) noexcept {
+               bool trialHistory, ForceStats& stats, std::vector<Vec2>& wallForce, ShapeContext& sc,
+               ContactLog* log) noexcept {
     const std::uint32_t nm = laws.materialCount();
     const ContactLaw* table = laws.laws().data();
     Real* xiHist = trialHistory ? list.xiTrial.data() : list.xi.data();
@@ -175,6 +178,9 @@ void areaWalls(model::ParticleStore& s, const model::WallSet& walls, ContactList
         s.fy[i] += f.onI.y;
         s.torque[i] += cross(c.ri, f.onI) + f.couple;  // couple: 0 but for area_potential
         wallForce[seg.wall] -= f.onI;
+        if (log)
+            log->addArea(s.id[i], 0, static_cast<std::int32_t>(seg.wall), c.g.point, -c.g.normal, f.onI,
+                         f.overlapDepth, c.g.area, norm(c.g.c2 - c.g.c1));
         stats.maxRelativeOverlap = std::max(stats.maxRelativeOverlap, f.overlapDepth / s.radius[i]);
     }
     stats.wallContacts += contacts;

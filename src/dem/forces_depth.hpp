@@ -25,7 +25,7 @@ namespace {
 template <class N, class D, class T, bool kRolling>
 void diskPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, std::uint32_t end,
                const LawTable& laws, const DriftVelocities& drift, Real dt, Real overlapGuard,
-               bool trialHistory, ForceStats& stats) noexcept {
+               bool trialHistory, ForceStats& stats, ContactLog* log) noexcept {
     const std::uint32_t nm = laws.materialCount();
     const ContactLaw* table = laws.laws().data();
     const Real* __restrict x = s.x.data();
@@ -118,6 +118,7 @@ void diskPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
         fy[j] -= fyi;
         tq[i] += ri * f.ft;  // arm r_i n, force component ft along perp(n)
         tq[j] += rj * f.ft;
+        if (log) log->addDiskPair(s.id[i], s.id[j], {x[i], y[i]}, ri, {x[j], y[j]}, rj, {nx, ny}, {fxi, fyi});
         const Real rel = overlap / (ri < rj ? ri : rj);
         maxRel = rel > maxRel ? rel : maxRel;
     }
@@ -129,7 +130,7 @@ void diskPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
 template <class N, class D, class T>
 void diskWalls(model::ParticleStore& s, const model::WallSet& walls, ContactList& list, std::uint32_t begin,
                std::uint32_t end, const LawTable& laws, const DriftVelocities& drift, Real dt,
-               bool trialHistory, ForceStats& stats, std::vector<Vec2>& wallForce) noexcept {
+               bool trialHistory, ForceStats& stats, std::vector<Vec2>& wallForce, ContactLog* log) noexcept {
     const std::uint32_t nm = laws.materialCount();
     const ContactLaw* table = laws.laws().data();
     GL_ASSERT(begin <= end && end <= list.size() && list.second.size() == list.size(),
@@ -195,6 +196,8 @@ void diskWalls(model::ParticleStore& s, const model::WallSet& walls, ContactList
         s.fy[i] += fyi;
         s.torque[i] -= r * f.ft;  // arm -r n
         wallForce[seg.wall] -= Vec2{fxi, fyi};
+        if (log)
+            log->addDiskWall(s.id[i], static_cast<std::int32_t>(seg.wall), c, r, g.overlap, -n, {fxi, fyi});
         stats.maxRelativeOverlap = std::max(stats.maxRelativeOverlap, g.overlap / r);
     }
     stats.wallContacts += contacts;

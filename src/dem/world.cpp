@@ -133,8 +133,13 @@ void World::exchangeParticles() {
 
 void World::evaluateForces(const BodyForces& body, const DriftVelocities& drift, bool trial) {
     m_shapes.pool = &m_pool;
+    ContactLog* log = nullptr;
+    if (m_recordContacts) {
+        log = &m_contactLog;
+        log->step = m_step;
+    }
     computeForces(m_store, m_walls, m_list, m_laws, body, drift, m_config.dt, trial, m_stats, m_wallForce,
-                  m_shapes);
+                  m_shapes, log);
 }
 
 BodyForces World::bodyForcesAt(std::int64_t step) const noexcept {

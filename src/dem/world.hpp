@@ -105,6 +105,10 @@ public:
     /// Current global size scale s (1 without [size_scaling]).
     Real sizeScale() const noexcept { return m_scale; }
     /// Total contact force [N] on each wall at the last force evaluation.
+    /// Contact records: when on, every force evaluation fills contactLog() (the last evaluation
+    /// of a step wins). The DEM adapter turns it on for the steps that end at a snapshot.
+    void recordContacts(bool on) noexcept { m_recordContacts = on; }
+    const ContactLog& contactLog() const noexcept { return m_contactLog; }
     const std::vector<Vec2>& wallForce() const noexcept { return m_wallForce; }
     const StageTimers<Stage>& timers() const noexcept { return m_timers; }
     const char* broadPhaseName() const noexcept { return m_broad->name(); }
@@ -148,6 +152,8 @@ private:
     NeighborList m_list;
     ForceStats m_stats;
     std::vector<Vec2> m_wallForce;
+    ContactLog m_contactLog;
+    bool m_recordContacts = false;
     StageTimers<Stage> m_timers;
     std::int64_t m_step = 0;
     std::uint64_t m_forceEvaluations = 0;

@@ -63,6 +63,7 @@ void readOutput(TableReader& r, model::OutputDef& o) {
     r.number("series_interval", o.seriesInterval);
     r.number("checkpoint_interval", o.checkpointInterval);
     r.boolean("vtk", o.vtk);
+    r.boolean("contacts", o.contacts);
 }
 
 /// Reads the sections of the running engine (nullptr: run.engine is unknown, its error is

@@ -274,6 +274,59 @@ void writeWallsVtp(const std::string& path, const model::WallSet& w, double time
     b.save(path);
 }
 
+void writeContactsVtp(const std::string& path, const analysis::ContactFrame& c,
+                      const std::vector<Vec2>& centreA, const std::vector<Vec2>& centreB, double time) {
+    const std::size_t n = c.size();
+    if (centreA.size() != n || centreB.size() != n)
+        throw std::invalid_argument(
+            fmt::format("{}: {} contacts but {} / {} centres", path, n, centreA.size(), centreB.size()));
+    std::vector<double> points, force(3 * n, 0.0), normal(3 * n, 0.0), magnitude(n);
+    std::vector<std::int64_t> connectivity, offsets(n);
+    points.reserve(9 * n);
+    connectivity.reserve(3 * n);
+    const auto addPoint = [&](Vec2 p) {
+        connectivity.push_back(static_cast<std::int64_t>(points.size() / 3));
+        points.insert(points.end(), {p.x, p.y, 0.0});
+    };
+    for (std::size_t k = 0; k < n; ++k) {
+        addPoint(centreA[k]);
+        addPoint({c.px[k], c.py[k]});
+        if (!c.atWall(k)) addPoint(centreB[k]);
+        offsets[k] = static_cast<std::int64_t>(connectivity.size());
+        force[3 * k] = c.fx[k];
+        force[3 * k + 1] = c.fy[k];
+        normal[3 * k] = c.nx[k];
+        normal[3 * k + 1] = c.ny[k];
+        magnitude[k] = std::hypot(c.fx[k], c.fy[k]);
+    }
+    VtpBuilder b;
+    b.timeValue(time);
+    b.line(pieceTag(points.size() / 3, 0, n));
+    const std::string in = "        ";
+    b.line("      <CellData Scalars=\"force_magnitude\" Vectors=\"force\">");
+    b.array(in, "Int64", "a", 1, c.a);
+    b.array(in, "Int64", "b", 1, c.b);
+    b.array(in, "Int32", "wall", 1, c.wall);
+    b.array(in, "Float64", "force", 3, force);
+    b.array(in, "Float64", "force_magnitude", 1, magnitude);
+    b.array(in, "Float64", "fn", 1, c.fn);
+    b.array(in, "Float64", "ft", 1, c.ft);
+    b.array(in, "Float64", "normal", 3, normal);
+    b.array(in, "Float64", "depth", 1, c.depth);
+    b.array(in, "Float64", "area", 1, c.area);
+    b.array(in, "Float64", "length", 1, c.length);
+    b.line("      </CellData>");
+    b.line("      <Points>");
+    b.array(in, "Float64", "Points", 3, points);
+    b.line("      </Points>");
+    b.line("      <Lines>");
+    b.array(in, "Int64", "connectivity", 1, connectivity);
+    b.array(in, "Int64", "offsets", 1, offsets);
+    b.line("      </Lines>");
+    b.line("    </Piece>");
+    b.save(path);
+}
+
 void writeGasVtp(const std::string& path, const analysis::PointSet& g, const std::vector<std::uint64_t>& ids,
                  const std::vector<double>& collisions, double time) {
     const std::size_t n = g.size();

@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/dem_frame.hpp"
 #include "analysis/point_set.hpp"
 #include "io/vtk_reader.hpp"
 #include "model/particle_store.hpp"
@@ -48,6 +49,16 @@ void writeParticlesVtp(const std::string& path, const model::ParticleStore& s, d
 /// Writes wall segments as Lines cells (points = segment end points a, b of each segment) with
 /// the cell data `wall` (index of the wall the segment belongs to) and field data TimeValue [s].
 void writeWallsVtp(const std::string& path, const model::WallSet& w, double time);
+
+/// The force network of a DEM snapshot (gc2d spec 7 item 12): one polyline cell per contact
+/// from the centre of a through the contact point to the centre of b (at a wall: centre of a to
+/// the contact point), so that a line ends where the force acts, also for polygons. Cell data:
+/// a, b, wall (Int64/Int32), force [N] (on a, 3 components), force_magnitude [N], fn, ft [N],
+/// normal (3 components), depth [m], area [m^2], length [m]; field data TimeValue [s]. In
+/// ParaView: Tube filter, vary the radius by `force_magnitude`. `centreA`/`centreB` [m]: the
+/// centres of a and b (centreB unused at walls), one per contact.
+void writeContactsVtp(const std::string& path, const analysis::ContactFrame& c,
+                      const std::vector<Vec2>& centreA, const std::vector<Vec2>& centreB, double time);
 
 /// Hard-sphere gas snapshot (edmd engine): points in 3D (z = 0 for disks), point data id,
 /// radius [m], velocity [m/s], speed [m/s] and collisions (per particle, for colouring as in the

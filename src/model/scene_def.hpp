@@ -31,6 +31,8 @@ struct OutputDef {
     Real seriesInterval = 0;      ///< [s] series.csv period (0: 100 rows over the run)
     Real checkpointInterval = 0;  ///< [s] checkpoint period (0: only at the end)
     bool vtk = true;
+    /// DEM: the contact file and force-network line set of every snapshot (io/contact_file.hpp)
+    bool contacts = true;
     SourceLoc loc;
 };
 

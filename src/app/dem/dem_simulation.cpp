@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "app/dem/dem_contacts.hpp"
 #include "app/dem/dem_engine.hpp"
 #include "app/simulation_options.hpp"
 #include "core/interrupt.hpp"
@@ -77,14 +78,26 @@ public:
     }
 
     std::uint32_t start() override {
+        m_world.recordContacts(wantsContacts());  // the t = 0 snapshot's contacts
         m_world.initialize();
+        m_world.recordContacts(false);
         return kSimOk;
     }
+    /// Steps between snapshots (output.snapshot_interval; 0: the first and the last only), as plan().
+    std::int64_t snapshotEvery() const {
+        const Real interval = m_scene.output.snapshotInterval;
+        return std::max<std::int64_t>(1, interval > 0 ? dem::periodSteps(interval, m_dt) : m_endStep);
+    }
+    bool wantsContacts() const { return m_scene.output.vtk && m_scene.output.contacts; }
+    /// Whether the state after step `s` is written as a snapshot (the periodic ones and the end).
+    bool endsAtSnapshot(std::int64_t s) const { return s % snapshotEvery() == 0 || s == m_endStep; }
+
     void beginLoop() override { m_loopStartStep = m_world.stepIndex(); }
 
     std::uint32_t advance(const Stop& stop) override {
         while (static_cast<std::uint64_t>(m_world.stepIndex()) < stop.count) {
             if (interruptRequested()) return kSimInterrupted;  // between whole steps
+            if (wantsContacts()) m_world.recordContacts(endsAtSnapshot(m_world.stepIndex() + 1));
             const std::uint32_t status = m_world.step();
             if (status != dem::kStepOk)
                 return (status & dem::kStepNonFinite ? kSimNonFinite : 0u) |
@@ -216,6 +229,10 @@ public:
         if (!m_scene.output.vtk) return;
         io::writeSnapshot(dir, index, m_world.store(), m_world.shapes(), m_world.walls(), m_world.time(),
                           pvd);
+        // The records are those of this step's force evaluation (recorded because the step ends at a
+        // snapshot); a snapshot at a step that was not recorded has no contact file.
+        if (wantsContacts() && m_world.contactLog().step == m_world.stepIndex())
+            writeContactSnapshot(dir, index, m_world, pvd);
     }
 
     void writeFinal(const std::string& dir) override {
