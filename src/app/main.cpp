@@ -51,7 +51,8 @@ int main(int argc, char** argv) {
     render->add_flag("--png", png, "write PNG pictures (DIR/png/frame_NNNNNN.png)");
     render->add_option("--width", renderOpt.width, "picture width in pixels (default 1200)")
         ->check(CLI::Range(64, 16384));
-    render->add_option("--every", renderOpt.every, "draw every Nth snapshot")->check(CLI::Range(1, 1000000000));
+    render->add_option("--every", renderOpt.every, "draw every Nth snapshot")
+        ->check(CLI::Range(1, 1000000000));
     render->add_option("--color", renderColor,
                        "grain colour: id | speed | pressure | coordination | material (default speed; "
                        "pressure and coordination need the contact files of a DEM run)");

@@ -86,7 +86,8 @@ std::optional<BoxOutline> readBox(const fs::path& dir) {
         const auto box = js.at("box").get<std::vector<double>>();
         if (box.size() < 2 || !(box[0] > 0) || !(box[1] > 0)) return std::nullopt;
         const auto periodic = js.value("periodic", std::vector<bool>(box.size(), false));
-        BoxOutline b{{0, 0}, {box[0], box[1]}, periodic.size() > 0 && periodic[0], periodic.size() > 1 && periodic[1]};
+        BoxOutline b{
+            {0, 0}, {box[0], box[1]}, periodic.size() > 0 && periodic[0], periodic.size() > 1 && periodic[1]};
         return b;
     } catch (const std::exception&) {
         return std::nullopt;  // an unreadable summary only loses the outline
@@ -94,7 +95,8 @@ std::optional<BoxOutline> readBox(const fs::path& dir) {
 }
 
 /// Per-grain value of the colour mode (pressure and coordination from `sums`).
-double grainValue(ColorMode mode, const analysis::GrainFrame& g, const GrainContactSums* sums, std::size_t i) {
+double grainValue(ColorMode mode, const analysis::GrainFrame& g, const GrainContactSums* sums,
+                  std::size_t i) {
     switch (mode) {
         case ColorMode::Id:
             return static_cast<double>(g.id[i]);
@@ -126,7 +128,8 @@ struct Scan {
     }
 };
 
-Scan scanAll(const std::vector<Snapshot>& snaps, const RenderOptions& opt, const std::optional<BoxOutline>& box) {
+Scan scanAll(const std::vector<Snapshot>& snaps, const RenderOptions& opt,
+             const std::optional<BoxOutline>& box) {
     Scan scan;
     const bool contacts = needsContacts(opt.color) || opt.forces;
     for (const Snapshot& s : snaps) {
@@ -138,7 +141,8 @@ Scan scanAll(const std::vector<Snapshot>& snaps, const RenderOptions& opt, const
         }
         for (std::size_t i = 0; i < f.size(); ++i) {
             if (f.isPolygon(i))
-                for (std::size_t c = f.cornerStart[i]; c < f.cornerStart[i + 1]; ++c) scan.add(f.corners[c], 0);
+                for (std::size_t c = f.cornerStart[i]; c < f.cornerStart[i + 1]; ++c)
+                    scan.add(f.corners[c], 0);
             else
                 scan.add({f.x[i], f.y[i]}, f.radius[i]);
         }
@@ -212,7 +216,7 @@ bool renderFrame(const FrameSetup& setup, const Snapshot& s, const fs::path& png
     cairo_save(cr);
     clipToScene(cr, L);
     if (setup.box) drawBox(cr, L, *setup.box);
-    drawGrains(cr, L, f, fill);
+    drawGrains(cr, L, f, fill, !setup.drawForces);
     if (!s.walls.empty()) drawWalls(cr, L, io::readWallsVtp(s.walls.string()), setup.strokes);
     if (setup.drawForces && contacts) drawForces(cr, L, f, *contacts, index, setup.forces);
     cairo_restore(cr);
@@ -260,8 +264,10 @@ int assembleMovie(const fs::path& pngDir, const std::vector<fs::path>& frames, i
     const fs::path list = pngDir / "frames.txt";
     {
         std::ofstream out(list);
-        for (const fs::path& p : frames) out << "file '" << p.filename().string() << "'\nduration " << 1.0 / fps << "\n";
-        if (!frames.empty()) out << "file '" << frames.back().filename().string() << "'\n";  // concat: last twice
+        for (const fs::path& p : frames)
+            out << "file '" << p.filename().string() << "'\nduration " << 1.0 / fps << "\n";
+        if (!frames.empty())
+            out << "file '" << frames.back().filename().string() << "'\n";  // concat: last twice
         if (!out) {
             fmt::print(stderr, "granulab render: cannot write {}\n", list.string());
             return 1;
@@ -275,7 +281,8 @@ int assembleMovie(const fs::path& pngDir, const std::vector<fs::path>& frames, i
         fmt::print(stderr, "granulab render: ffmpeg failed: {}\n", cmd);
         return 1;
     }
-    if (!quiet) fmt::print("granulab render: movie {} ({} frames, {} fps)\n", movie.string(), frames.size(), fps);
+    if (!quiet)
+        fmt::print("granulab render: movie {} ({} frames, {} fps)\n", movie.string(), frames.size(), fps);
     return 0;
 }
 
@@ -357,9 +364,11 @@ RenderLayout makeLayout(Vec2 lo, Vec2 hi, int widthPixels, bool exact) {
 int renderCommand(const RenderOptions& opt) {
     const fs::path dir(opt.outDir), pvd = dir / "snapshots.pvd";
     if (opt.width < kMinWidth || opt.width > kMaxWidth)
-        return badInput(fmt::format("width must be in [{}, {}] pixels, got {}", kMinWidth, kMaxWidth, opt.width));
+        return badInput(
+            fmt::format("width must be in [{}, {}] pixels, got {}", kMinWidth, kMaxWidth, opt.width));
     if (opt.every < 1) return badInput(fmt::format("--every must be at least 1, got {}", opt.every));
-    if (opt.fps < 1 || opt.fps > 240) return badInput(fmt::format("--fps must be in [1, 240], got {}", opt.fps));
+    if (opt.fps < 1 || opt.fps > 240)
+        return badInput(fmt::format("--fps must be in [1, 240], got {}", opt.fps));
     std::error_code ec;
     if (!fs::is_regular_file(pvd, ec))
         return badInput(fmt::format("no snapshots.pvd in {}; run `granulab run` first", opt.outDir));
@@ -373,7 +382,9 @@ int renderCommand(const RenderOptions& opt) {
             return badInput(fmt::format(
                 "{} needs contact files ({}) and {} has none; DEM runs write them beside the snapshots "
                 "(edmd gases have no contact forces). Use --color id, speed or material without --forces.",
-                opt.forces ? "--forces" : "--color " + std::string(opt.color == ColorMode::Pressure ? "pressure" : "coordination"),
+                opt.forces ? "--forces"
+                           : "--color " +
+                                 std::string(opt.color == ColorMode::Pressure ? "pressure" : "coordination"),
                 io::contactFileName(0), opt.outDir));
 
         const std::optional<BoxOutline> box = readBox(dir);
@@ -387,7 +398,8 @@ int renderCommand(const RenderOptions& opt) {
         setup.box = box;
         setup.drawForces = opt.forces;
         setup.forces.maxForce = scan.maxForce;
-        setup.forces.maxWidth = std::max(kForceWidth * scan.typicalRadius * setup.layout.scale, setup.forces.minWidth);
+        setup.forces.maxWidth =
+            std::max(kForceWidth * scan.typicalRadius * setup.layout.scale, setup.forces.minWidth);
         if (opt.forces) setup.scale.setPale(kPaleUnderForces);
         setup.decimals = timeDecimals(snaps);
 
@@ -405,7 +417,8 @@ int renderCommand(const RenderOptions& opt) {
             written.push_back(png);
         }
         if (withoutContacts > 0)
-            fmt::print(stderr, "granulab render: {} of {} frames have no contact file (drawn without contacts)\n",
+            fmt::print(stderr,
+                       "granulab render: {} of {} frames have no contact file (drawn without contacts)\n",
                        withoutContacts, written.size());
         if (!opt.quiet)
             fmt::print("granulab render: {} frames ({} x {} px) in {}\n", written.size(), setup.layout.width,

@@ -12,7 +12,8 @@ namespace granulab::app::render {
 GrainIndex::GrainIndex(const analysis::GrainFrame& g) {
     const std::size_t n = g.size();
     bool dense = true;
-    for (std::size_t i = 0; i < n && dense; ++i) dense = g.id[i] >= 0 && static_cast<std::size_t>(g.id[i]) < 2 * n + 16;
+    for (std::size_t i = 0; i < n && dense; ++i)
+        dense = g.id[i] >= 0 && static_cast<std::size_t>(g.id[i]) < 2 * n + 16;
     if (dense) {
         m_dense.assign(2 * n + 16, kNone);
         for (std::size_t i = 0; i < n; ++i) m_dense[static_cast<std::size_t>(g.id[i])] = i;
@@ -23,7 +24,8 @@ GrainIndex::GrainIndex(const analysis::GrainFrame& g) {
 }
 
 std::size_t GrainIndex::find(std::int64_t id) const noexcept {
-    if (!m_dense.empty()) return id >= 0 && static_cast<std::size_t>(id) < m_dense.size() ? m_dense[id] : kNone;
+    if (!m_dense.empty())
+        return id >= 0 && static_cast<std::size_t>(id) < m_dense.size() ? m_dense[id] : kNone;
     const auto it = m_sparse.find(id);
     return it == m_sparse.end() ? kNone : it->second;
 }
@@ -76,7 +78,9 @@ void drawForces(cairo_t* cr, const RenderLayout& L, const analysis::GrainFrame& 
         const double f = std::hypot(c.fx[k], c.fy[k]) / style.maxForce;
         if (!(f >= style.skipBelow)) continue;
         const double w = std::max(style.minWidth, std::min(f, 1.0) * style.maxWidth);
-        level[k] = step > 0 ? std::clamp(static_cast<int>(std::lround((w - style.minWidth) / step)), 0, kLevels - 1) : 0;
+        level[k] =
+            step > 0 ? std::clamp(static_cast<int>(std::lround((w - style.minWidth) / step)), 0, kLevels - 1)
+                     : 0;
         used[static_cast<std::size_t>(level[k])] = true;
     }
     cairo_save(cr);

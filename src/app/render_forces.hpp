@@ -46,7 +46,7 @@ struct ForceStyle {
     double maxForce = 0;      ///< [N] largest |F| over all frames
     double maxWidth = 1;      ///< [px] width at maxForce (0.6 typical grain radius)
     double minWidth = 0.5;    ///< [px] thinnest line drawn
-    double skipBelow = 0.01;  ///< forces below this fraction of maxForce are not drawn
+    double skipBelow = 1e-3;  ///< forces below this fraction of maxForce are not drawn (speed)
 };
 
 /// Draws, for every contact, a black line from grain a's centroid to the contact point and, for a

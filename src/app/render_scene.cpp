@@ -5,9 +5,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <utility>
-#include <cmath>
 
 namespace granulab::app::render {
 
@@ -23,7 +23,9 @@ double outlineWidth(double rPixels) {
 
 /// 8-bit colour as one key (the PNG's resolution: grouping by it loses nothing).
 std::uint32_t colourKey(Rgb c) {
-    const auto q = [](double v) { return static_cast<std::uint32_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255)); };
+    const auto q = [](double v) {
+        return static_cast<std::uint32_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255));
+    };
     return q(c.r) << 16 | q(c.g) << 8 | q(c.b);
 }
 
@@ -53,7 +55,8 @@ void clipToScene(cairo_t* cr, const RenderLayout& L) {
     cairo_clip(cr);
 }
 
-void drawGrains(cairo_t* cr, const RenderLayout& L, const analysis::GrainFrame& g, const std::vector<Rgb>& fill) {
+void drawGrains(cairo_t* cr, const RenderLayout& L, const analysis::GrainFrame& g,
+                const std::vector<Rgb>& fill, bool angleMarks) {
     // Batched (one cairo path per colour or width; 1e5 grains drawn one by one cost ~3x more):
     // the dark rims of the disks as one fill (radius r + w/2), the fills grouped by colour
     // (disks with a rim: radius r - w/2), the polygon outlines stroked grouped by width (1/8 px
@@ -71,7 +74,7 @@ void drawGrains(cairo_t* cr, const RenderLayout& L, const analysis::GrainFrame& 
         if (r < 2.5) continue;
         rim[i] = outlineWidth(r);
         if (g.isPolygon(i)) outlines.emplace_back(widthKey(rim[i]), i);
-        if (r < 3 || g.isPolygon(i) || !g.hasAngle) continue;
+        if (r < 3 || g.isPolygon(i) || !g.hasAngle || !angleMarks) continue;
         const Rgb f = fill[i];
         const bool light = 0.3 * f.r + 0.6 * f.g + 0.1 * f.b < 0.35;  // light mark on dark fills
         marks.emplace_back(2 * widthKey(rim[i]) + light, i);
@@ -106,7 +109,8 @@ void drawGrains(cairo_t* cr, const RenderLayout& L, const analysis::GrainFrame& 
                 circle(i, g.radius[i] * L.scale - 0.5 * rim[i]);
         },
         [&](std::uint64_t key) {
-            cairo_set_source_rgb(cr, ((key >> 16) & 255) / 255.0, ((key >> 8) & 255) / 255.0, (key & 255) / 255.0);
+            cairo_set_source_rgb(cr, ((key >> 16) & 255) / 255.0, ((key >> 8) & 255) / 255.0,
+                                 (key & 255) / 255.0);
             cairo_fill(cr);
         });
     cairo_set_line_join(cr, CAIRO_LINE_JOIN_MITER);

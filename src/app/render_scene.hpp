@@ -31,8 +31,10 @@ StrokeStyle makeStrokeStyle(const RenderLayout& L, double typicalRadius);
 /// Clips to the scene area (below the header).
 void clipToScene(cairo_t* cr, const RenderLayout& L);
 
-/// Grains in the colours `fill[i]`.
-void drawGrains(cairo_t* cr, const RenderLayout& L, const analysis::GrainFrame& g, const std::vector<Rgb>& fill);
+/// Grains in the colours `fill[i]`; disk angle marks if `angleMarks` (off under the force network,
+/// where a mark would read as a force line) and the file has angles.
+void drawGrains(cairo_t* cr, const RenderLayout& L, const analysis::GrainFrame& g,
+                const std::vector<Rgb>& fill, bool angleMarks);
 void drawWalls(cairo_t* cr, const RenderLayout& L, const analysis::WallSegments& w, const StrokeStyle& s);
 void drawBox(cairo_t* cr, const RenderLayout& L, const BoxOutline& box);
 

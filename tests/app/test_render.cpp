@@ -11,14 +11,14 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
-#include <utility>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
-#include <optional>
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "../support.hpp"
@@ -302,7 +302,7 @@ TEST(Render, ColourScaleIsFixedOverAllFrames) {
     // Speed 1 is disk B in frame 0 and disk A in frame 1: the same colour, viridis(1/3) of 0..3.
     EXPECT_TRUE(near(f0.at(b), f1.at(a), 2)) << str(f0.at(b)) << " vs " << str(f1.at(a));
     EXPECT_TRUE(near(f0.at(b), toRgb8(render::viridis(1.0 / 3)), 4)) << str(f0.at(b));
-    EXPECT_TRUE(near(f0.at(a), {68, 1, 84})) << str(f0.at(a));      // speed 0: lo of all frames
+    EXPECT_TRUE(near(f0.at(a), {68, 1, 84})) << str(f0.at(a));     // speed 0: lo of all frames
     EXPECT_TRUE(near(f1.at(b), {253, 231, 37})) << str(f1.at(b));  // speed 3: hi of all frames
 
     // --range 0:2 replaces the scan: speed 1 is viridis(1/2), speed 3 is clamped to viridis(1).
@@ -328,7 +328,8 @@ TEST(Render, ViewZoomsIntoAWindow) {
     // Disk B (x = 0.75) is outside: no fast colour anywhere in the scene.
     int fast = 0;
     for (int y = L.headerHeight; y < png.height(); ++y)
-        for (int x = 0; x < png.width(); ++x) fast += near(png.pixel(x, y), toRgb8(render::viridis(1.0 / 3)), 3);
+        for (int x = 0; x < png.width(); ++x)
+            fast += near(png.pixel(x, y), toRgb8(render::viridis(1.0 / 3)), 3);
     EXPECT_EQ(fast, 0);
 }
 
@@ -437,7 +438,8 @@ TEST(Render, ContactModesWithoutContactFilesFail) {
     const fs::path& dir = scratch.path;
     writeScene(dir);
     for (const char* args : {"--color pressure", "--color coordination", "--forces"}) {
-        const test::CommandResult r = test::runGranulab(fmt::format("render '{}' --png {}", dir.string(), args), dir);
+        const test::CommandResult r =
+            test::runGranulab(fmt::format("render '{}' --png {}", dir.string(), args), dir);
         EXPECT_EQ(r.status, 2) << args << ": " << r.output;
         EXPECT_NE(r.output.find("needs contact files"), std::string::npos) << r.output;
     }
@@ -460,7 +462,8 @@ TEST(Render, BadOptionsExit2WithAMessage) {
                  {"--color heat", "--color 'heat': choose id, speed"},
                  {"--every 0", "--every"}};
     for (const auto& c : cases) {
-        const test::CommandResult r = test::runGranulab(fmt::format("render '{}' --png {}", dir.string(), c.args), dir);
+        const test::CommandResult r =
+            test::runGranulab(fmt::format("render '{}' --png {}", dir.string(), c.args), dir);
         EXPECT_EQ(r.status, 2) << c.args << ": " << r.output;
         EXPECT_NE(r.output.find(c.message), std::string::npos) << c.args << ": " << r.output;
     }
@@ -482,7 +485,8 @@ TEST(Render, EveryNthFrameAndMovieWithoutFfmpeg) {
     EXPECT_EQ(r.status, 0) << r.output;
     EXPECT_TRUE(fs::exists(dir / "png" / "frame_000000.png"));
     EXPECT_FALSE(fs::exists(dir / "png" / "frame_000001.png"));  // every 2nd: 0 only
-    EXPECT_TRUE(fs::exists(dir / "png" / "movie.mp4") || r.output.find("apt-get install ffmpeg") != std::string::npos)
+    EXPECT_TRUE(fs::exists(dir / "png" / "movie.mp4") ||
+                r.output.find("apt-get install ffmpeg") != std::string::npos)
         << r.output;
     // Without ffmpeg on PATH: the hint on how to get it, exit 0, the frames written.
     const char* oldPath = std::getenv("PATH");
