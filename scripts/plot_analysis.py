@@ -389,9 +389,11 @@ def line_plot(table, out_dir, plt, np):
     x = x[order]
     colours = colour_plan(ys)
     height = 1.8 + 3.0 * len(panels)
-    if special == "repose_profile":  # true shape: equal aspect, figure fitted to it
+    equal = False  # repose_profile: the true shape when the heap is not too flat to read
+    if special == "repose_profile":
         span = np.nanmax(table.data[:, 1:]) - min(0.0, np.nanmin(table.data[:, 1:]))
-        height = min(8.0, max(3.2, 1.8 + 6.5 * span / max(np.ptp(x), 1e-300)))
+        equal = span / max(np.ptp(x), 1e-300) >= 0.15
+        height = min(8.0, max(3.2, 1.8 + 6.5 * span / max(np.ptp(x), 1e-300))) if equal else 4.5
     fig = new_figure(plt, 8.5 if special != "repose_profile" else 9.5, height)
     axes = fig.subplots(len(panels), 1, sharex=True, squeeze=False)[:, 0]
     for k, (ax, (unit, cols)) in enumerate(zip(axes, panels)):
@@ -421,8 +423,9 @@ def line_plot(table, out_dir, plt, np):
             ax.set_xscale("log")
         ylab = ", ".join(cols) if len(cols) <= 2 else "value"
         if special == "repose_profile":
-            ax.set_aspect("equal", adjustable="box")
-            ylab = "height"
+            if equal:
+                ax.set_aspect("equal", adjustable="box")
+            ylab = "height" if equal else "height (vertical scale exaggerated)"
         ax.set_ylabel(label(ylab, unit) + (" (log)" if logy and log_copy else ""))
         ax.grid(True, alpha=0.3)
         if ax.get_legend_handles_labels()[0]:

@@ -68,9 +68,10 @@ int main(int argc, char** argv) {
         "         granulab render out/gas --png --every 10 --range 0:2 --view 0:50,0:50 --movie");
 
     app::AnalyzeOptions analyzeOpt;
-    auto* analyze =
-        cli.add_subcommand("analyze", "measure an edmd output folder: g(r), p(v), density, clusters, tau_p");
-    analyze->add_option("dir", analyzeOpt.dir, "output folder of an edmd run")->required();
+    auto* analyze = cli.add_subcommand("analyze",
+                                       "measure an output folder: edmd g(r), p(v), density, clusters, tau_p; "
+                                       "dem pressure, forces, coordination, repose, packing, stress, ...");
+    analyze->add_option("dir", analyzeOpt.dir, "output folder of a run")->required();
     analyze->add_option("--rmax", analyzeOpt.rMaxRadii, "g(r) range in particle radii")
         ->check(CLI::Range(2.5, 1e6));
     analyze->add_option("--bins", analyzeOpt.bins, "g(r) bins")->check(CLI::Range(4, 1000000));
@@ -79,7 +80,48 @@ int main(int argc, char** argv) {
     analyze->add_option("--per-bin", analyzeOpt.particlesPerBin, "particles per density bin")
         ->check(CLI::Range(1.0, 1e9));
     analyze->add_flag("--quiet,-q", analyzeOpt.quiet, "no summary on the terminal");
-    analyze->footer("example: granulab analyze out/cooling_gas_2d --rmax 10 --bins 200");
+    analyze->add_option(
+        "what", analyzeOpt.what,
+        "dem: analyses (pressure forces coordination repose packing stress coarse janssen strain "
+        "persistence roughness; default: the first six)");
+    analyze->add_option("--at", analyzeOpt.at, "dem: the snapshot nearest this time [s] (default: the last)")
+        ->check(CLI::NonNegativeNumber);
+    analyze->add_option("--every", analyzeOpt.every, "dem: every Nth snapshot")
+        ->check(CLI::Range(1, 1000000));
+    analyze->add_option("--window", analyzeOpt.window,
+                        "dem: test-area size W[:H] [m] (default: ~150 grains)");
+    analyze->add_option("--step", analyzeOpt.step,
+                        "dem: test-area step SX[:SY] [m] (default: half the window)");
+    analyze->add_option("--wall", analyzeOpt.walls,
+                        "dem: walls for pressure, by name or index (default: all)");
+    analyze->add_option("--silo", analyzeOpt.silo,
+                        "dem janssen: straight:R | stepped:R1,R2,H0 | slanted:A,B | parabolic:A,B [m]");
+    analyze->add_option("--surface", analyzeOpt.surface,
+                        "dem janssen: free-surface height [m] (default: the highest grain top)");
+    analyze
+        ->add_option("--reference", analyzeOpt.reference,
+                     "dem strain/persistence: time of the other snapshot [s]")
+        ->check(CLI::NonNegativeNumber);
+    analyze->add_option("--range", analyzeOpt.ranges,
+                        "dem repose/roughness: surface range X0:X1 [m] (repeatable)");
+    analyze->add_option("--region", analyzeOpt.region,
+                        "dem coordination/persistence: grains in X0:X1,Y0:Y1 [m]");
+    analyze->add_option("--kernel", analyzeOpt.kernel, "dem coarse: gauss | lucy")
+        ->check(CLI::IsMember({"gauss", "lucy"}));
+    analyze
+        ->add_option("--kernel-width", analyzeOpt.kernelWidth,
+                     "dem coarse: Gaussian w or Lucy c [m] (default d/2 or 2d)")
+        ->check(CLI::PositiveNumber);
+    analyze
+        ->add_option("--half-width", analyzeOpt.halfWidth,
+                     "dem pressure: profile window half width b [m] (default 5 d)")
+        ->check(CLI::PositiveNumber);
+    analyze
+        ->add_option("--bin", analyzeOpt.binWidth, "dem repose/roughness: surface bin width [m] (default d)")
+        ->check(CLI::PositiveNumber);
+    analyze->footer(
+        "examples: granulab analyze out/cooling_gas_2d --rmax 10 --bins 200\n"
+        "          granulab analyze out/sand_heap pressure stress repose --window 0.02");
 
     app::MasterEquationOptions meOpt;
     auto* master = cli.add_subcommand("master-equation",

@@ -35,21 +35,25 @@ analysis::ContactFrame contactFrameOf(const dem::ContactLog& log, double time) {
 }
 
 void writeContactSnapshot(const std::string& dir, int index, const dem::World& world, io::PvdWriter& pvd) {
-    const analysis::ContactFrame c = contactFrameOf(world.contactLog(), world.time());
     const model::ParticleStore& s = world.store();
     std::unordered_map<ParticleId, std::size_t> slotOf;
     slotOf.reserve(s.size());
     for (std::size_t i = 0; i < s.size(); ++i) slotOf.emplace(s.id[i], i);
-    // A grain that left through an outlet at the end of the step keeps its line to the contact point.
-    const auto centre = [&](std::int64_t id, Vec2 fallback) {
-        const auto it = slotOf.find(static_cast<ParticleId>(id));
-        return it == slotOf.end() ? fallback : Vec2{s.x[it->second], s.y[it->second]};
+    // The contacts of grains that left through an outlet at the end of the step are dropped, so the
+    // contact file names only grains of the particle file of the same snapshot.
+    dem::ContactLog kept;
+    kept.step = world.contactLog().step;
+    for (const dem::ContactRecord& r : world.contactLog().records)
+        if (slotOf.count(r.a) && (r.wall >= 0 || slotOf.count(r.b))) kept.records.push_back(r);
+    const analysis::ContactFrame c = contactFrameOf(kept, world.time());
+    const auto centre = [&](std::int64_t id) {
+        const std::size_t i = slotOf.at(static_cast<ParticleId>(id));
+        return Vec2{s.x[i], s.y[i]};
     };
     std::vector<Vec2> centreA(c.size()), centreB(c.size());
     for (std::size_t k = 0; k < c.size(); ++k) {
-        const Vec2 p{c.px[k], c.py[k]};
-        centreA[k] = centre(c.a[k], p);
-        centreB[k] = c.atWall(k) ? p : centre(c.b[k], p);
+        centreA[k] = centre(c.a[k]);
+        centreB[k] = c.atWall(k) ? Vec2{c.px[k], c.py[k]} : centre(c.b[k]);
     }
     const std::filesystem::path folder(dir);
     const std::string npy = io::contactFileName(index);

@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 
+#include "app/analyze.hpp"
 #include "app/simulation.hpp"
 #include "dem/scene_setup.hpp"
 #include "model/scene_def.hpp"
@@ -20,5 +21,9 @@ std::unique_ptr<Simulation> makeDemSimulation(const model::SceneDef& scene, cons
 
 /// `granulab info` of a dem scene: particles, materials, laws, contact time, advised dt, memory.
 int demInfo(const std::string& scenePath, const model::SceneDef& scene);
+
+/// `granulab analyze DIR [what...]` of a dem run (gc2d spec section 7): reads the snapshots'
+/// particles, walls and contact files and writes DIR/analysis/snapshot_NNNNNN/<table>.csv.
+int demAnalyze(const AnalyzeOptions& options, const nlohmann::json& summary);
 
 }  // namespace granulab::app

@@ -246,6 +246,9 @@ public:
         nlohmann::json js;
         js["resumed_from_step"] = report.resumed ? m_loopStartStep : 0;
         js["wall_segments"] = m_world.walls().segments.size();
+        js["walls"] = nlohmann::json::array();  // names in wall-index order (`granulab analyze --wall`)
+        for (const auto& w : m_world.walls().walls) js["walls"].push_back(w.name);
+        js["gravity_magnitude"] = norm(m_world.gravity());  // [m/s^2] at the end of the run
         js["dt"] = m_dt;
         js["steps"] = steps;
         js["particle_steps_per_s"] =
