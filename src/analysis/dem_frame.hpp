@@ -21,6 +21,7 @@ struct GrainFrame {
     std::vector<double> vx, vy;          ///< [m/s]
     std::vector<double> omega;           ///< [rad/s] counter-clockwise
     std::vector<double> angle;           ///< [rad] counter-clockwise
+    bool hasAngle = true;                ///< false: smooth spheres (no angle array, angle read as 0)
     std::vector<double> radius;          ///< [m] disk radius; polygons: circumradius about the centre
     std::vector<double> speed;           ///< [m/s]
     std::vector<double> mass;            ///< [kg] (2D: areal density x area)

@@ -43,16 +43,29 @@ int main(int argc, char** argv) {
     info->add_option("--set", sets, "override a scene key")->take_all();
     info->footer("example: granulab info examples/disks_in_box.toml --set dem.dt=2e-5");
 
-    std::string renderDir;
+    app::RenderOptions renderOpt;
     bool png = false;
-    int width = 1200;
-    bool renderQuiet = false;
+    std::string renderColor = "speed", renderRange, renderView;
     auto* render = cli.add_subcommand("render", "draw the snapshots of an output folder");
-    render->add_option("dir", renderDir, "output folder of a run")->required();
-    render->add_flag("--png", png, "write PNG pictures (DIR/png/)");
-    render->add_option("--width", width, "picture width in pixels")->check(CLI::Range(64, 16384));
-    render->add_flag("--quiet,-q", renderQuiet, "no messages");
-    render->footer("example: granulab render out/disks_in_box --png --width 800");
+    render->add_option("dir", renderOpt.outDir, "output folder of a run")->required();
+    render->add_flag("--png", png, "write PNG pictures (DIR/png/frame_NNNNNN.png)");
+    render->add_option("--width", renderOpt.width, "picture width in pixels (default 1200)")
+        ->check(CLI::Range(64, 16384));
+    render->add_option("--every", renderOpt.every, "draw every Nth snapshot")
+        ->check(CLI::Range(1, 1000000000));
+    render->add_option("--color", renderColor,
+                       "grain colour: id | speed | pressure | coordination | material (default speed; "
+                       "pressure and coordination need the contact files of a DEM run)");
+    render->add_flag("--forces", renderOpt.forces,
+                     "draw the force network: centroid to contact point, width ~ |F| (needs contact files)");
+    render->add_option("--range", renderRange, "fixed colour range lo:hi (default: all frames' min:max)");
+    render->add_option("--view", renderView, "world window x0:x1,y0:y1 [m] (default: everything)");
+    render->add_flag("--movie", renderOpt.movie, "assemble DIR/png/movie.mp4 with ffmpeg (if on PATH)");
+    render->add_option("--fps", renderOpt.fps, "movie frame rate (default 10)")->check(CLI::Range(1, 240));
+    render->add_flag("--quiet,-q", renderOpt.quiet, "no messages");
+    render->footer(
+        "example: granulab render out/disks_in_box --png --width 800 --color pressure --forces\n"
+        "         granulab render out/gas --png --every 10 --range 0:2 --view 0:50,0:50 --movie");
 
     app::AnalyzeOptions analyzeOpt;
     auto* analyze = cli.add_subcommand("analyze",
@@ -162,7 +175,36 @@ int main(int argc, char** argv) {
                 fmt::print(stderr, "granulab render: choose an output format (--png)\n");
                 return app::kExitBadInput;
             }
-            return app::renderCommand(renderDir, width, renderQuiet);
+            const auto color = app::parseColorMode(renderColor);
+            if (!color) {
+                fmt::print(stderr,
+                           "granulab render: --color '{}': choose id, speed, pressure, coordination or "
+                           "material\n",
+                           renderColor);
+                return app::kExitBadInput;
+            }
+            renderOpt.color = *color;
+            if (!renderRange.empty()) {
+                renderOpt.range = app::parseRange(renderRange);
+                if (!renderOpt.range) {
+                    fmt::print(stderr,
+                               "granulab render: --range '{}': expected lo:hi, two numbers with lo < hi "
+                               "(e.g. --range 0:2.5)\n",
+                               renderRange);
+                    return app::kExitBadInput;
+                }
+            }
+            if (!renderView.empty()) {
+                renderOpt.view = app::parseView(renderView);
+                if (!renderOpt.view) {
+                    fmt::print(stderr,
+                               "granulab render: --view '{}': expected x0:x1,y0:y1 in metres with x0 < x1 "
+                               "and y0 < y1 (e.g. --view 0:0.5,0:0.3)\n",
+                               renderView);
+                    return app::kExitBadInput;
+                }
+            }
+            return app::renderCommand(renderOpt);
         }
         if (*help && !helpTopic.empty() && helpTopic != "laws" && helpTopic != "restitution") {
             fmt::print(stderr, "granulab help: unknown topic '{}'; topics: laws, restitution\n", helpTopic);

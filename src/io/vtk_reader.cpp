@@ -171,6 +171,7 @@ ParticleFrame readParticlesVtp(const std::string& path) {
     const auto radius = f.read<double>("PointData", "radius", "Float64", 1);
     const auto speed = f.read<double>("PointData", "speed", "Float64", 1);
     // Smooth hard spheres (edmd snapshots) have no orientation: no angle array, angle 0.
+    frame.hasAngle = f.has("PointData", "angle");
     const auto angle = f.has("PointData", "angle") ? f.read<double>("PointData", "angle", "Float64", 1)
                                                    : std::vector<double>(nPoints, 0.0);
     const auto id = f.read<std::int64_t>("PointData", "id", "Int64", 1);

@@ -1,20 +1,31 @@
 // SPDX-License-Identifier: MIT
 // `granulab render`: a 3-disk scene with a floor, rendered and inspected pixel by pixel
 // (existence, width, disk colours, white background, y axis pointing up); a polygon scene
-// (filled true outlines in the speed colour).
+// (filled true outlines in the speed colour); one colour scale over frames and --range; force
+// lines from each centroid to the contact point; pressure and coordination from contacts;
+// --view; option errors (exit 2); --movie without ffmpeg.
 #include <cairo.h>
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "../support.hpp"
 #include "app/render.hpp"
+#include "app/render_colors.hpp"
+#include "app/render_forces.hpp"
+#include "io/contact_file.hpp"
 #include "io/vtk_writer.hpp"
 
 namespace granulab::app {
@@ -59,6 +70,16 @@ bool near(Rgb8 c, Rgb8 want, int tol = 12) {
 
 constexpr double kR = 0.1;  // [m] disk radius
 
+/// Renders `dir` with the options `edit` sets on top of the defaults (quiet).
+int render(const fs::path& dir, int width, void (*edit)(RenderOptions&) = nullptr) {
+    RenderOptions o;
+    o.outDir = dir.string();
+    o.width = width;
+    o.quiet = true;
+    if (edit) edit(o);
+    return renderCommand(o);
+}
+
 /// Slow disk A, fast disk B on a floor at y = 0.1, disk C (medium speed) highest.
 void writeScene(const fs::path& dir) {
     model::WallSet walls;
@@ -77,7 +98,7 @@ TEST(Render, DrawsDisksWithYUp) {
     const test::ScratchDir scratch;
     const fs::path& dir = scratch.path;
     writeScene(dir);
-    ASSERT_EQ(renderCommand(dir.string(), 400, true), 0);
+    ASSERT_EQ(render(dir, 400), 0);
     EXPECT_TRUE(fs::exists(dir / "png" / "frame_000001.png"));
 
     const Png png(dir / "png" / "frame_000000.png");
@@ -170,7 +191,7 @@ TEST(Render, DrawsPolygonsAsFilledOutlines) {
     const dem::World world = test::makeWorldFromToml(kPolygonScene);
     io::PvdWriter pvd((dir / "snapshots.pvd").string());
     io::writeSnapshot(dir.string(), 0, world.store(), world.shapes(), world.walls(), 0.0, pvd);
-    ASSERT_EQ(renderCommand(dir.string(), 800, true), 0);
+    ASSERT_EQ(render(dir, 800), 0);
     const Png png(dir / "png" / "frame_000000.png");
     ASSERT_TRUE(png.ok());
 
@@ -226,7 +247,7 @@ TEST(Render, MissingFolderReturns2) {
     const test::ScratchDir scratch;
     const fs::path dir = scratch.path / "nothing";
     ::testing::internal::CaptureStderr();
-    EXPECT_EQ(renderCommand(dir.string(), 400, true), 2);
+    EXPECT_EQ(render(dir, 400), 2);
     const std::string err = ::testing::internal::GetCapturedStderr();
     EXPECT_NE(err.find("no snapshots.pvd"), std::string::npos) << err;
     EXPECT_NE(err.find("granulab run"), std::string::npos) << err;
@@ -241,6 +262,290 @@ TEST(Render, LayoutKeepsAspectAndBox) {
     EXPECT_LT(hi.x, L.width);
     EXPECT_GT(hi.y, L.headerHeight);
     EXPECT_LT(lo.y, L.height);
+}
+
+Rgb8 toRgb8(render::Rgb c) {
+    return {static_cast<int>(std::lround(255 * c.r)), static_cast<int>(std::lround(255 * c.g)),
+            static_cast<int>(std::lround(255 * c.b))};
+}
+std::string str(Rgb8 c) {
+    return std::to_string(c.r) + "," + std::to_string(c.g) + "," + std::to_string(c.b);
+}
+bool isBlack(Rgb8 c) {
+    return c.r < 40 && c.g < 40 && c.b < 40;
+}
+
+/// Two disks on a floor in two frames: frame 0 speeds (0, 1), frame 1 speeds (1, 3).
+void writeTwoSpeedFrames(const fs::path& dir) {
+    model::WallSet walls;
+    walls.addPolyline("floor", {{0.0, 0.05}, {1.0, 0.05}}, false, 0, {});
+    io::PvdWriter pvd((dir / "snapshots.pvd").string());
+    const double speeds[2][2] = {{0.0, 1.0}, {1.0, 3.0}};
+    for (int k = 0; k < 2; ++k) {
+        model::ParticleStore s;
+        s.add(0, {0.25, 0.2}, {speeds[k][0], 0.0}, kPi / 2, 0.0, kR, 1.0, 1.0, 0);
+        s.add(1, {0.75, 0.2}, {0.0, speeds[k][1]}, kPi / 2, 0.0, kR, 1.0, 1.0, 0);
+        io::writeSnapshot(dir.string(), k, s, model::ShapePool{}, walls, 0.1 * k, pvd);
+    }
+}
+
+TEST(Render, ColourScaleIsFixedOverAllFrames) {
+    const test::ScratchDir scratch;
+    const fs::path& dir = scratch.path;
+    writeTwoSpeedFrames(dir);
+    ASSERT_EQ(render(dir, 400), 0);
+    const Png f0(dir / "png" / "frame_000000.png"), f1(dir / "png" / "frame_000001.png");
+    ASSERT_TRUE(f0.ok() && f1.ok());
+    const RenderLayout L = makeLayout({0.0, 0.05}, {1.0, 0.2 + kR}, 400);
+    ASSERT_EQ(f0.height(), L.height);
+    const Vec2 a = L.toPixel({0.25 - 0.5 * kR, 0.2}), b = L.toPixel({0.75 - 0.5 * kR, 0.2});
+    // Speed 1 is disk B in frame 0 and disk A in frame 1: the same colour, viridis(1/3) of 0..3.
+    EXPECT_TRUE(near(f0.at(b), f1.at(a), 2)) << str(f0.at(b)) << " vs " << str(f1.at(a));
+    EXPECT_TRUE(near(f0.at(b), toRgb8(render::viridis(1.0 / 3)), 4)) << str(f0.at(b));
+    EXPECT_TRUE(near(f0.at(a), {68, 1, 84})) << str(f0.at(a));     // speed 0: lo of all frames
+    EXPECT_TRUE(near(f1.at(b), {253, 231, 37})) << str(f1.at(b));  // speed 3: hi of all frames
+
+    // --range 0:2 replaces the scan: speed 1 is viridis(1/2), speed 3 is clamped to viridis(1).
+    ASSERT_EQ(render(dir, 400, [](RenderOptions& o) { o.range = Interval{0.0, 2.0}; }), 0);
+    const Png g0(dir / "png" / "frame_000000.png"), g1(dir / "png" / "frame_000001.png");
+    EXPECT_TRUE(near(g0.at(b), toRgb8(render::viridis(0.5)), 4)) << str(g0.at(b));
+    EXPECT_TRUE(near(g1.at(a), toRgb8(render::viridis(0.5)), 4)) << str(g1.at(a));
+    EXPECT_TRUE(near(g1.at(b), {253, 231, 37})) << str(g1.at(b));
+}
+
+TEST(Render, ViewZoomsIntoAWindow) {
+    const test::ScratchDir scratch;
+    const fs::path& dir = scratch.path;
+    writeTwoSpeedFrames(dir);
+    ASSERT_EQ(render(dir, 400, [](RenderOptions& o) { o.view = ViewBox{{0.1, 0.05}, {0.4, 0.35}}; }), 0);
+    const Png png(dir / "png" / "frame_000000.png");
+    ASSERT_TRUE(png.ok());
+    const RenderLayout L = makeLayout({0.1, 0.05}, {0.4, 0.35}, 400, true);
+    EXPECT_EQ(png.height(), L.height);
+    EXPECT_NEAR(L.scale, 400 / 0.3, 1e-9);  // the window fills the width exactly
+    EXPECT_TRUE(near(png.at(L.toPixel({0.25 - 0.5 * kR, 0.2})), {68, 1, 84}));  // disk A, slow
+    EXPECT_TRUE(isWhite(png.at(L.toPixel({0.15, 0.33}))));
+    // Disk B (x = 0.75) is outside: no fast colour anywhere in the scene.
+    int fast = 0;
+    for (int y = L.headerHeight; y < png.height(); ++y)
+        for (int x = 0; x < png.width(); ++x)
+            fast += near(png.pixel(x, y), toRgb8(render::viridis(1.0 / 3)), 3);
+    EXPECT_EQ(fast, 0);
+}
+
+/// Disk A at a wall (contact on its right rim), disks C and D touching: contact files 0 and 1.
+void writeContactScene(const fs::path& dir, double forceScale1) {
+    io::PvdWriter pvd((dir / "snapshots.pvd").string());
+    for (int k = 0; k < 2; ++k) {
+        model::ParticleStore s;
+        s.add(0, {0.3, 0.5}, {0.0, 0.0}, kPi / 2, 0.0, kR, 1.0, 1.0, 0);
+        s.add(1, {0.3, 0.8}, {0.0, 0.0}, kPi / 2, 0.0, kR, 1.0, 1.0, 0);
+        s.add(2, {0.5, 0.8}, {0.0, 0.0}, kPi / 2, 0.0, kR, 1.0, 1.0, 0);
+        io::writeSnapshot(dir.string(), k, s, model::ShapePool{}, model::WallSet{}, 0.1 * k, pvd);
+        analysis::ContactFrame c;
+        const double f = k == 0 ? 10.0 : 10.0 * forceScale1;
+        const auto add = [&c](std::int64_t a, std::int64_t b, std::int32_t wall, Vec2 p, Vec2 n, double fn) {
+            c.a.push_back(a), c.b.push_back(b), c.wall.push_back(wall);
+            c.px.push_back(p.x), c.py.push_back(p.y), c.nx.push_back(n.x), c.ny.push_back(n.y);
+            c.fx.push_back(-fn * n.x), c.fy.push_back(-fn * n.y), c.fn.push_back(fn), c.ft.push_back(0);
+            c.depth.push_back(0), c.area.push_back(0), c.length.push_back(0);
+        };
+        add(0, -1, 0, {0.4, 0.5}, {1, 0}, f);  // grain 0 against wall 0 at its right rim
+        add(1, 2, -1, {0.4, 0.8}, {1, 0}, f);  // grains 1 and 2
+        io::writeContactsNpy((dir / io::contactFileName(k)).string(), c);
+    }
+}
+
+TEST(Render, ForceLinesRunFromEachCentroidToTheContactPoint) {
+    const test::ScratchDir scratch;
+    const fs::path& dir = scratch.path;
+    writeContactScene(dir, 0.5);
+    ASSERT_EQ(render(dir, 400, [](RenderOptions& o) { o.forces = true; }), 0);
+    const Png png(dir / "png" / "frame_000000.png");
+    ASSERT_TRUE(png.ok());
+    const RenderLayout L = makeLayout({0.3 - kR, 0.5 - kR}, {0.5 + kR, 0.8 + kR}, 400);
+    ASSERT_EQ(png.height(), L.height);
+    const double r = kR * L.scale;  // [px]
+    // Wall contact: drawn from the centroid (0.3, 0.5) to the contact point (0.4, 0.5) only.
+    for (const double t : {0.05, 0.3, 0.6, 0.9}) {
+        const Vec2 p = L.toPixel({0.3 + t * 0.1, 0.5});
+        EXPECT_TRUE(isBlack(png.at(p))) << "t = " << t << ": " << str(png.at(p));
+    }
+    const Vec2 end = L.toPixel({0.4, 0.5});
+    EXPECT_TRUE(isWhite(png.at({end.x + 4, end.y}))) << str(png.at({end.x + 4, end.y}));
+    // Left of the centroid: the pale disk, no line.
+    EXPECT_FALSE(isBlack(png.at(L.toPixel({0.3 - 0.5 * kR, 0.5}))));
+    // Width: the strongest force of all frames (frame 0 here) gets 0.6 radius.
+    int dark = 0;
+    for (int y = static_cast<int>(end.y - r); y < end.y + r; ++y)
+        dark += isBlack(png.pixel(static_cast<int>(end.x - 0.3 * r), y));
+    EXPECT_NEAR(dark, 0.6 * r, 2.5);
+    // Grain pair: both halves, from each centroid to the common contact point; not beyond D's.
+    for (const double x : {0.31, 0.35, 0.39, 0.41, 0.45, 0.49})
+        EXPECT_TRUE(isBlack(png.at(L.toPixel({x, 0.8})))) << "x = " << x;
+    EXPECT_FALSE(isBlack(png.at(L.toPixel({0.55, 0.8}))));
+
+    // Frame 1 (half the force): half the width, the same scale as frame 0.
+    const Png half(dir / "png" / "frame_000001.png");
+    int dark1 = 0;
+    for (int y = static_cast<int>(end.y - r); y < end.y + r; ++y)
+        dark1 += isBlack(half.pixel(static_cast<int>(end.x - 0.3 * r), y));
+    EXPECT_NEAR(dark1, 0.3 * r, 2.5);
+}
+
+TEST(Render, PressureAndCoordinationFromContacts) {
+    // One disk squeezed between two walls along x by F: p = F / (pi r) (compressive > 0), 2 contacts;
+    // a pair pressed together by F: each p = F r / (2 pi r^2).
+    analysis::GrainFrame g;
+    for (const double x : {0.0, 1.0, 1.2}) {
+        g.id.push_back(static_cast<std::int64_t>(g.x.size()));
+        g.x.push_back(x), g.y.push_back(0), g.radius.push_back(kR);
+        g.cornerStart.push_back(0);
+    }
+    analysis::ContactFrame c;
+    const auto add = [&c](std::int64_t a, std::int64_t b, Vec2 p, Vec2 f) {
+        c.a.push_back(a), c.b.push_back(b), c.wall.push_back(b < 0 ? 0 : -1);
+        c.px.push_back(p.x), c.py.push_back(p.y), c.fx.push_back(f.x), c.fy.push_back(f.y);
+    };
+    const double F = 3.0;
+    add(0, -1, {kR, 0}, {-F, 0});
+    add(0, -1, {-kR, 0}, {F, 0});
+    add(1, 2, {1.1, 0}, {-F, 0});  // force on 1 points away from 2: repulsive
+    const render::GrainContactSums s = render::grainContactSums(g, c, render::GrainIndex(g));
+    EXPECT_NEAR(s.pressure[0], F / (kPi * kR), 1e-9);
+    EXPECT_NEAR(s.pressure[1], F * kR / (2 * kPi * kR * kR), 1e-9);
+    EXPECT_NEAR(s.pressure[2], s.pressure[1], 1e-9);
+    EXPECT_EQ(s.coordination[0], 2);
+    EXPECT_EQ(s.coordination[1], 1);
+    EXPECT_EQ(s.coordination[2], 1);
+}
+
+TEST(Render, CoordinationColoursAreIntegers) {
+    const test::ScratchDir scratch;
+    const fs::path& dir = scratch.path;
+    writeContactScene(dir, 1.0);
+    ASSERT_EQ(render(dir, 400, [](RenderOptions& o) { o.color = ColorMode::Coordination; }), 0);
+    const Png png(dir / "png" / "frame_000000.png");
+    const RenderLayout L = makeLayout({0.3 - kR, 0.5 - kR}, {0.5 + kR, 0.8 + kR}, 400);
+    // Every grain has one contact: range 1..1, one colour for all three.
+    const Rgb8 a = png.at(L.toPixel({0.3, 0.5 + 0.5 * kR})), d = png.at(L.toPixel({0.5, 0.8 + 0.5 * kR}));
+    EXPECT_TRUE(near(a, d, 2)) << str(a) << " vs " << str(d);
+    EXPECT_FALSE(isWhite(a));
+}
+
+TEST(Render, ContactModesWithoutContactFilesFail) {
+    const test::ScratchDir scratch;
+    const fs::path& dir = scratch.path;
+    writeScene(dir);
+    for (const char* args : {"--color pressure", "--color coordination", "--forces"}) {
+        const test::CommandResult r =
+            test::runGranulab(fmt::format("render '{}' --png {}", dir.string(), args), dir);
+        EXPECT_EQ(r.status, 2) << args << ": " << r.output;
+        EXPECT_NE(r.output.find("needs contact files"), std::string::npos) << r.output;
+    }
+}
+
+TEST(Render, BadOptionsExit2WithAMessage) {
+    const test::ScratchDir scratch;
+    const fs::path& dir = scratch.path;
+    writeScene(dir);
+    const struct {
+        const char* args;
+        const char* message;
+    } cases[] = {{"--range 2:1", "--range '2:1': expected lo:hi"},
+                 {"--range 1", "--range '1': expected lo:hi"},
+                 {"--range a:b", "expected lo:hi"},
+                 {"--range 0:inf", "expected lo:hi"},
+                 {"--view 0:1", "--view '0:1': expected x0:x1,y0:y1"},
+                 {"--view 0:1,1:0", "expected x0:x1,y0:y1"},
+                 {"--view 0:1,0:1,2:3", "expected x0:x1,y0:y1"},
+                 {"--color heat", "--color 'heat': choose id, speed"},
+                 {"--every 0", "--every"}};
+    for (const auto& c : cases) {
+        const test::CommandResult r =
+            test::runGranulab(fmt::format("render '{}' --png {}", dir.string(), c.args), dir);
+        EXPECT_EQ(r.status, 2) << c.args << ": " << r.output;
+        EXPECT_NE(r.output.find(c.message), std::string::npos) << c.args << ": " << r.output;
+    }
+    EXPECT_TRUE(parseRange("-1.5:2e3").has_value());
+    EXPECT_DOUBLE_EQ(parseRange("-1.5:2e3")->lo, -1.5);
+    const auto v = parseView("0:0.5,-1:2");
+    ASSERT_TRUE(v.has_value());
+    EXPECT_DOUBLE_EQ(v->hi.x, 0.5);
+    EXPECT_DOUBLE_EQ(v->lo.y, -1.0);
+}
+
+TEST(Render, EveryNthFrameAndMovieWithoutFfmpeg) {
+    const test::ScratchDir scratch;
+    const fs::path& dir = scratch.path;
+    writeScene(dir);
+    const test::CommandResult r =
+        test::runGranulab(fmt::format("render '{}' --png --every 2 --movie --color id", dir.string()), dir);
+    // PATH of the test run may or may not hold ffmpeg: either a movie or the hint, never a failure.
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_TRUE(fs::exists(dir / "png" / "frame_000000.png"));
+    EXPECT_FALSE(fs::exists(dir / "png" / "frame_000001.png"));  // every 2nd: 0 only
+    EXPECT_TRUE(fs::exists(dir / "png" / "movie.mp4") ||
+                r.output.find("apt-get install ffmpeg") != std::string::npos)
+        << r.output;
+    // Without ffmpeg on PATH: the hint on how to get it, exit 0, the frames written.
+    const char* oldPath = std::getenv("PATH");
+    const std::string saved = oldPath ? oldPath : "";
+    ::setenv("PATH", (dir / "no-such-folder").c_str(), 1);
+    ::testing::internal::CaptureStdout();
+    const int status = render(dir, 200, [](RenderOptions& o) {
+        o.movie = true;
+        o.quiet = false;
+    });
+    const std::string out = ::testing::internal::GetCapturedStdout();
+    ::setenv("PATH", saved.c_str(), 1);
+    EXPECT_EQ(status, 0);
+    EXPECT_NE(out.find("apt-get install ffmpeg"), std::string::npos) << out;
+}
+
+/// Timing of one 1e5-disk frame with 2e5 contacts (not run by default):
+/// build/tests/granulab_tests --gtest_filter='Render.DISABLED_Bench*' --gtest_also_run_disabled_tests
+TEST(Render, DISABLED_Bench100kDisks) {
+    const test::ScratchDir scratch;
+    const fs::path& dir = scratch.path;
+    constexpr int kSide = 316;  // 99856 disks, square lattice, touching neighbours
+    model::ParticleStore s;
+    analysis::ContactFrame c;
+    for (int j = 0; j < kSide; ++j)
+        for (int i = 0; i < kSide; ++i) {
+            const auto id = static_cast<std::int64_t>(j * kSide + i);
+            const double v = 0.5 * (1 + std::sin(0.05 * i + 0.07 * j));
+            s.add(static_cast<ParticleId>(id), {1e-3 * i, 1e-3 * j}, {v, 0.0}, 0.1 * i, 0.0, 0.49e-3, 1.0,
+                  1.0, 0);
+            for (const auto& [di, dj] : {std::pair{1, 0}, std::pair{0, 1}}) {
+                if (i + di >= kSide || j + dj >= kSide) continue;
+                const double f = 1 + std::cos(0.3 * i) * std::cos(0.2 * j);
+                c.a.push_back(id), c.b.push_back(id + di + dj * kSide), c.wall.push_back(-1);
+                c.px.push_back(1e-3 * (i + 0.5 * di)), c.py.push_back(1e-3 * (j + 0.5 * dj));
+                c.nx.push_back(di), c.ny.push_back(dj), c.fx.push_back(-f * di), c.fy.push_back(-f * dj);
+                c.fn.push_back(f), c.ft.push_back(0), c.depth.push_back(0), c.area.push_back(0);
+                c.length.push_back(0);
+            }
+        }
+    io::PvdWriter pvd((dir / "snapshots.pvd").string());
+    io::writeSnapshot(dir.string(), 0, s, model::ShapePool{}, model::WallSet{}, 0.0, pvd);
+    io::writeContactsNpy((dir / io::contactFileName(0)).string(), c);
+    const struct {
+        int width;
+        bool forces;
+    } runs[] = {{1200, false}, {1200, true}, {2400, false}};
+    for (const auto& run : runs) {
+        const auto t0 = std::chrono::steady_clock::now();
+        RenderOptions o;
+        o.outDir = dir.string();
+        o.width = run.width;
+        o.quiet = true;
+        o.forces = run.forces;
+        ASSERT_EQ(renderCommand(o), 0);
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        std::printf("1e5 disks%s, width %d: %.3f s (scan, draw, PNG)\n", run.forces ? " + 2e5 forces" : "",
+                    run.width, seconds);
+    }
 }
 
 }  // namespace
