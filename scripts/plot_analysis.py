@@ -311,6 +311,8 @@ def polar_plot(table, out_dir, plt, np):
     fig = new_figure(plt, 7.5, 6.2)
     ax = fig.add_subplot(projection="polar")
     for k, (name, unit) in enumerate(table.columns[1:]):
+        if name in ("forces", "contacts", "grains") or name.startswith("count"):
+            continue  # counts per bin have another scale than the density P [1/rad]
         values = table.data[order, k + 1]
         colour = f"C{k % 10}"
         theory = name.endswith("_theory")

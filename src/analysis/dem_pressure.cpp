@@ -148,9 +148,11 @@ PressureProfile pressureProfile(const ContactFrame& contacts, const WallSegments
         const Real d = s.x1 - s.x0, pScale = s.rho * s.g * s.h;  // [m], [N/m]
         r.xOverD.resize(n);
         r.pOverRhoGH.resize(n);
+        r.pAverageOverRhoGH.resize(n);
         for (std::size_t w = 0; w < n; ++w) {
             r.xOverD[w] = (r.x[w] - s.x0) / d;
             r.pOverRhoGH[w] = r.p[w] / pScale;
+            r.pAverageOverRhoGH[w] = r.pAverage[w] / pScale;
         }
     }
     if (load.empty()) r.notes.push_back("warning: no contact with the selected walls; p = 0 everywhere");
@@ -172,6 +174,7 @@ Table toTable(const PressureProfile& profile, std::string name) {
     if (profile.scale) {
         t.add("x/d", "1").values = profile.xOverD;
         t.add("p/(rho g h)", "1").values = profile.pOverRhoGH;
+        t.add("p_avg/(rho g h)", "1").values = profile.pAverageOverRhoGH;
     }
     t.notes.push_back(
         "p(x) = (1/2b) sum n_in . F_i over contacts with x - b <= x_i <= x + b (gc2d Eq. 2.38); "

@@ -76,15 +76,16 @@ struct PressureProfile {
     /// [m] window centres along the wall coordinate x = dot(point, t), t the wall direction with its
     /// largest component positive: x for a floor, y for a side wall.
     std::vector<Real> x;
-    std::vector<Real> p;                ///< [N/m] (1/2b) sum n_in . F_i over the window (Eq. 2.38)
-    std::vector<Real> pAverage;         ///< [N/m] moving average of p over M windows (fewer at the ends)
-    std::vector<std::size_t> contacts;  ///< contacts per window
-    std::vector<Real> xOverD;           ///< (x - x0)/d, empty without scale
-    std::vector<Real> pOverRhoGH;       ///< p/(rho g h), empty without scale
-    Vec2 tangent{}, normal{};           ///< wall direction and inward normal (unit)
-    Real halfWidth = 0, step = 0;       ///< [m]
-    std::size_t movingAverage = 1;      ///< M
-    std::size_t sparseWindows = 0;      ///< windows with fewer than minContacts contacts
+    std::vector<Real> p;                  ///< [N/m] (1/2b) sum n_in . F_i over the window (Eq. 2.38)
+    std::vector<Real> pAverage;           ///< [N/m] moving average of p over M windows (fewer at the ends)
+    std::vector<std::size_t> contacts;    ///< contacts per window
+    std::vector<Real> xOverD;             ///< (x - x0)/d, empty without scale
+    std::vector<Real> pOverRhoGH;         ///< p/(rho g h), empty without scale
+    std::vector<Real> pAverageOverRhoGH;  ///< p_avg/(rho g h), empty without scale
+    Vec2 tangent{}, normal{};             ///< wall direction and inward normal (unit)
+    Real halfWidth = 0, step = 0;         ///< [m]
+    std::size_t movingAverage = 1;        ///< M
+    std::size_t sparseWindows = 0;        ///< windows with fewer than minContacts contacts
     std::optional<PileScale> scale;
     std::vector<std::string> notes;  ///< warnings (sparse windows, no contacts)
 };

@@ -120,8 +120,8 @@ int main(int argc, char** argv) {
         ->add_option("--bin", analyzeOpt.binWidth, "dem repose/roughness: surface bin width [m] (default d)")
         ->check(CLI::PositiveNumber);
     analyze->footer(
-        "examples: granulab analyze out/cooling_gas_2d --rmax 10 --bins 200\n"
-        "          granulab analyze out/sand_heap pressure stress repose --window 0.02");
+        "example: granulab analyze out/sand_heap pressure stress repose --window 0.02\n"
+        "         granulab analyze out/cooling_gas_2d --rmax 10 --bins 200 (edmd)");
 
     app::MasterEquationOptions meOpt;
     auto* master = cli.add_subcommand("master-equation",

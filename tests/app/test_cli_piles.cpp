@@ -71,7 +71,8 @@ Line fit(const std::vector<double>& x, const std::vector<double>& y) {
 
 TEST(Cli, PileColumnsOfSquaresTent) {
     test::ScratchDir dir;
-    const std::string scene = std::string(GRANULAB_SOURCE_DIR) + "/examples/studies/piles/ordered_columns.toml";
+    const std::string scene =
+        std::string(GRANULAB_SOURCE_DIR) + "/examples/studies/piles/ordered_columns.toml";
     // 0.05 s: the stacks settle within a few ms (the full scene runs 0.1 s).
     auto r = test::runGranulab("run '" + scene + "' -q --out out --set run.end_time=0.05", dir.path, 300);
     ASSERT_EQ(r.status, 0) << r.output;
@@ -147,10 +148,11 @@ TEST(Cli, PileColumnsOfSquaresTent) {
         EXPECT_NEAR(l.slope, -side * tent, 0.15 * tent) << "side " << side;
     }
 
-    // 3. Coordination (floor contacts are not counted by the analysis): a grain with one above and
-    // one below has K = 2, the top and bottom of a column K = 1, a lone square 0, nothing more.
+    // 3. Coordination (the analysis counts the floor's contacts, spec 7 item 4): a grain with one
+    // above and one below has K = 2, so has the bottom of a column standing on the floor with a
+    // square above; the top of a column has K = 1, a lone square 1 (the floor); nothing more.
     long interior = 0;
-    for (const auto& [c, n] : count) interior += std::max(n - 2, 0);
+    for (const auto& [c, n] : count) interior += n >= 2 ? n - 1 : 0;
     const auto coord = readTable(snap / "coordination.csv");  // K, P, grains
     long twos = 0, more = 0;
     for (const auto& row : coord) {
@@ -191,7 +193,8 @@ struct Repose {
 Repose pour(const std::string& scene, const std::filesystem::path& dir, const std::string& out) {
     const std::string path = std::string(GRANULAB_SOURCE_DIR) + "/examples/studies/piles/" + scene;
     auto r = test::runGranulab(
-        "run '" + path + "' -q --out " + out + " --set source[0].to=3.0 run.end_time=3.3 dem.dt=5e-6", dir, 600);
+        "run '" + path + "' -q --out " + out + " --set source[0].to=3.0 run.end_time=3.3 dem.dt=5e-6", dir,
+        600);
     EXPECT_EQ(r.status, 0) << r.output;
     r = test::runGranulab("analyze " + out + " repose -q", dir, 120);
     EXPECT_EQ(r.status, 0) << r.output;
@@ -222,6 +225,6 @@ TEST(Cli, PilePouredSevenCornersSteeperThanThirteen) {
     }
     const double m7 = 0.5 * (r7.left + r7.right), m13 = 0.5 * (r13.left + r13.right);
     const double e7 = 0.5 * std::abs(r7.left - r7.right), e13 = 0.5 * std::abs(r13.left - r13.right);
-    EXPECT_GT(m7 - m13, 2 * std::hypot(e7, e13))
-        << "7 corners " << r7.left << " / " << r7.right << " deg, 13 corners " << r13.left << " / " << r13.right;
+    EXPECT_GT(m7 - m13, 2 * std::hypot(e7, e13)) << "7 corners " << r7.left << " / " << r7.right
+                                                 << " deg, 13 corners " << r13.left << " / " << r13.right;
 }

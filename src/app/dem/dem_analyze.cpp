@@ -406,32 +406,51 @@ private:
 
     static constexpr std::int32_t kFloorIndex = 1 << 30;  ///< the synthetic wall of floorFromSegments
 
-    /// The lowest horizontal wall segments (one line) as wall kFloorIndex, with the wall contacts
-    /// whose point lies on that line (within a tenth of a grain diameter); false if none.
+    /// The floor of a scene without a straight horizontal wall: the lowest line of horizontal wall
+    /// segments that carries wall contacts (a box drawn as one polyline, or a polygon body whose top
+    /// face the grains stand on), as wall kFloorIndex with the contacts on that line (within a tenth
+    /// of a grain diameter and inside a segment's x range); false if no such line.
     bool floorFromSegments(analysis::ContactFrame& contacts, analysis::WallSegments& segments) const {
         const auto& w = m_frame.walls;
         const auto horizontal = [&](std::size_t k) {
             const Vec2 d = w.b[k] - w.a[k];
             return norm(d) > 0 && std::abs(d.y) <= 1e-9 * norm(d);
         };
-        double level = std::numeric_limits<double>::infinity();
+        const double tol = 0.1 * m_frame.meanDiameter;
+        std::set<double> levels;
         for (std::size_t k = 0; k < w.size(); ++k)
-            if (horizontal(k)) level = std::min(level, w.a[k].y);
-        if (!std::isfinite(level)) return false;
-        for (std::size_t k = 0; k < w.size(); ++k)
-            if (horizontal(k) && std::abs(w.a[k].y - level) <= 1e-9 * norm(w.b[k] - w.a[k])) {
-                segments.a.push_back(w.a[k]);
-                segments.b.push_back(w.b[k]);
-                segments.wall.push_back(kFloorIndex);
+            if (horizontal(k)) levels.insert(w.a[k].y);
+        for (const double level : levels) {
+            analysis::WallSegments line;
+            for (std::size_t k = 0; k < w.size(); ++k)
+                if (horizontal(k) && std::abs(w.a[k].y - level) <= tol) {
+                    line.a.push_back(w.a[k]);
+                    line.b.push_back(w.b[k]);
+                    line.wall.push_back(kFloorIndex);
+                }
+            const auto onLine = [&](std::size_t c) {
+                if (!m_frame.contacts.atWall(c) || std::abs(m_frame.contacts.py[c] - level) > tol)
+                    return false;
+                for (std::size_t k = 0; k < line.size(); ++k)
+                    if (m_frame.contacts.px[c] >= std::min(line.a[k].x, line.b[k].x) - tol &&
+                        m_frame.contacts.px[c] <= std::max(line.a[k].x, line.b[k].x) + tol)
+                        return true;
+                return false;
+            };
+            analysis::ContactFrame floorContacts = m_frame.contacts;
+            std::size_t count = 0;
+            for (std::size_t c = 0; c < floorContacts.size(); ++c)
+                if (onLine(c)) {
+                    floorContacts.wall[c] = kFloorIndex;
+                    ++count;
+                }
+            if (count > 0) {
+                contacts = std::move(floorContacts);
+                segments = std::move(line);
+                return true;
             }
-        contacts = m_frame.contacts;
-        std::size_t onFloor = 0;
-        for (std::size_t k = 0; k < contacts.size(); ++k)
-            if (contacts.atWall(k) && std::abs(contacts.py[k] - level) <= 0.1 * m_frame.meanDiameter) {
-                contacts.wall[k] = kFloorIndex;
-                ++onFloor;
-            }
-        return onFloor > 0;
+        }
+        return false;
     }
 
     void forces() {
@@ -446,11 +465,14 @@ private:
     void coordinationNumbers() {
         needContacts("coordination");
         analysis::CoordinationParams p;
+        p.countWalls = true;  // K counts every contact of a grain, the floor's too (spec 7 item 4)
         if (!m_opt.region.empty()) p.region = region();
         const auto c = analysis::coordination(m_frame.grains, m_frame.contacts, p);
         write(analysis::toTable(c));
-        say(fmt::format("coordination: <K> = {:.4g} over all, {:.4g} without rattlers ({:.1f} % rattlers)",
-                        c.meanK, c.meanKNonRattler, 100 * c.rattlerFraction));
+        say(fmt::format(
+            "coordination (walls counted): <K> = {:.4g} over all, {:.4g} without rattlers ({:.1f} % "
+            "rattlers)",
+            c.meanK, c.meanKNonRattler, 100 * c.rattlerFraction));
     }
 
     analysis::SurfaceProfile surface() const {
