@@ -26,7 +26,8 @@ struct AnalyzeOptions {
     std::vector<std::string> walls;  ///< wall names or indices (pressure; default: all walls)
     std::string silo;                ///< "straight:R", "stepped:R1,R2,H0", "slanted:A,B", "parabolic:A,B"
     double surface = std::numeric_limits<double>::quiet_NaN();  ///< [m] free-surface height (janssen)
-    double reference = -1;            ///< [s] the second snapshot (strain: unloaded; persistence: before)
+    std::string depth;      ///< "Z0:Z1" [m] janssen: fit only the depths in this range (default: all)
+    double reference = -1;  ///< [s] the second snapshot (strain: unloaded; persistence: before)
     std::vector<std::string> ranges;  ///< "X0:X1" [m] surface ranges (roughness; repose halves)
     std::string region;               ///< "X0:X1,Y0:Y1" [m] grains counted (coordination, persistence)
     std::string kernel = "gauss";     ///< coarse: gauss | lucy

@@ -98,6 +98,8 @@ int main(int argc, char** argv) {
                         "dem janssen: straight:R | stepped:R1,R2,H0 | slanted:A,B | parabolic:A,B [m]");
     analyze->add_option("--surface", analyzeOpt.surface,
                         "dem janssen: free-surface height [m] (default: the highest grain top)");
+    analyze->add_option("--depth", analyzeOpt.depth,
+                        "dem janssen: fit only depths Z0:Z1 [m] below the surface (default: all)");
     analyze
         ->add_option("--reference", analyzeOpt.reference,
                      "dem strain/persistence: time of the other snapshot [s]")

@@ -152,11 +152,23 @@ Scan scanAll(const std::vector<Snapshot>& snaps, const RenderOptions& opt,
             scan.maxForce = std::max(scan.maxForce, maxForce(c));
             if (needsContacts(opt.color)) sums = grainContactSums(f, c, GrainIndex(f));
         }
+        // Continuous quantities (speed, pressure) span the 0.5-99.5 % quantiles of each frame, so
+        // that one impact or one squeezed grain does not darken every other grain of the run; the
+        // discrete ones (id, material, coordination) their whole range.
+        std::vector<double> values;
+        values.reserve(f.size());
         for (std::size_t i = 0; i < f.size(); ++i) {
             const double v = grainValue(opt.color, f, sums ? &*sums : nullptr, i);
-            if (!std::isfinite(v)) continue;
-            scan.valueLo = std::min(scan.valueLo, v);
-            scan.valueHi = std::max(scan.valueHi, v);
+            if (std::isfinite(v)) values.push_back(v);
+        }
+        if (!values.empty()) {
+            const bool continuous = opt.color == ColorMode::Speed || opt.color == ColorMode::Pressure;
+            const std::size_t cut = continuous ? values.size() / 200 : 0;
+            std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(cut), values.end());
+            scan.valueLo = std::min(scan.valueLo, values[cut]);
+            const std::size_t top = values.size() - 1 - cut;
+            std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(top), values.end());
+            scan.valueHi = std::max(scan.valueHi, values[top]);
         }
         if (s.walls.empty()) continue;
         const io::WallFrame w = io::readWallsVtp(s.walls.string());

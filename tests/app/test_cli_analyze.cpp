@@ -207,6 +207,26 @@ TEST_F(AnalyzeDem, CoarseGrainedStressCarriesTheWeightAbove) {
     EXPECT_GE(checked, 3);
 }
 
+TEST_F(AnalyzeDem, JanssenTableKeepsTheChosenDepths) {
+    // The plumbing of `janssen` (the fit itself is tested in tests/analysis/test_janssen.cpp and on
+    // a real silo in Cli.StraightSiloSaturatesAsJanssenPredicts; this bed is 4 grains deep, too
+    // shallow for a meaningful fit): the rows are the chosen depths, with the theory columns and
+    // the fitted k and mu_j in the notes.
+    const auto r = test::runGranulab(
+        "analyze out janssen --silo straight:6 --window 12:1 --step 12:0.5 --depth 0.4:3", s_dir->path, 120);
+    ASSERT_EQ(r.status, 0) << r.output;
+    const Table t = readTable(out() / "analysis" / "snapshot_000003" / "janssen.csv");
+    ASSERT_GE(t.rows.size(), 3u);
+    for (const auto& row : t.rows) {
+        EXPECT_GE(row[t.col("z")], 0.4);
+        EXPECT_LE(row[t.col("z")], 3.0);
+        EXPECT_TRUE(std::isfinite(row[t.col("sigma_zz_theory")]));
+    }
+    int fitted = 0;
+    for (const auto& n : t.notes) fitted += n.rfind("k = ", 0) == 0 || n.rfind("mu_j = ", 0) == 0;
+    EXPECT_EQ(fitted, 2);
+}
+
 TEST_F(AnalyzeDem, EverySnapshotAndChosenTime) {
     ASSERT_EQ(test::runGranulab("analyze out coordination --every 1 -q", s_dir->path, 120).status, 0);
     for (int k = 0; k <= 3; ++k)

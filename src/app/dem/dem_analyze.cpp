@@ -554,7 +554,23 @@ private:
         const analysis::TestAreaGrid grid = areaGrid(m_opt, m_frame);
         const auto s = stressOn(grid);
         const double top = std::isfinite(m_opt.surface) ? m_opt.surface : m_frame.hi.y;
-        const auto profile = analysis::depthProfile(s, top);
+        auto profile = analysis::depthProfile(s, top);
+        if (!m_opt.depth.empty()) {  // e.g. the thesis drops the slanted silo below z = 0.35 m
+            const auto [z0, z1] = parseRange("--depth", m_opt.depth);
+            analysis::DepthProfile kept = profile;
+            kept.z.clear();
+            kept.sigmaXx.clear();
+            kept.sigmaZz.clear();
+            kept.areas.clear();
+            for (std::size_t k = 0; k < profile.z.size(); ++k)
+                if (profile.z[k] >= z0 && profile.z[k] <= z1) {
+                    kept.z.push_back(profile.z[k]);
+                    kept.sigmaXx.push_back(profile.sigmaXx[k]);
+                    kept.sigmaZz.push_back(profile.sigmaZz[k]);
+                    kept.areas.push_back(profile.areas[k]);
+                }
+            profile = std::move(kept);
+        }
         // Bulk density: the grains' mass over the silo's area from the surface to the lowest grain.
         double mass = 0;
         for (double m : m_frame.grains.mass) mass += m;
