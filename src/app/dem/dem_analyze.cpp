@@ -14,7 +14,6 @@
 #include <map>
 #include <optional>
 #include <set>
-#include <unordered_set>
 
 #include "analysis/dem_coarse_grain.hpp"
 #include "analysis/dem_coordination.hpp"
