@@ -52,6 +52,20 @@ public:
         line("    </FieldData>");
     }
 
+    /// The Points and Lines blocks of a line-set piece, and the end of the piece.
+    void pointsAndLines(const std::vector<double>& points, const std::vector<std::int64_t>& connectivity,
+                        const std::vector<std::int64_t>& offsets) {
+        const std::string in = "        ";
+        line("      <Points>");
+        array(in, "Float64", "Points", 3, points);
+        line("      </Points>");
+        line("      <Lines>");
+        array(in, "Int64", "connectivity", 1, connectivity);
+        array(in, "Int64", "offsets", 1, offsets);
+        line("      </Lines>");
+        line("    </Piece>");
+    }
+
     void save(const std::string& path) const {
         AtomicFile file(path);
         file.write(
@@ -263,14 +277,7 @@ void writeWallsVtp(const std::string& path, const model::WallSet& w, double time
     b.line("      <CellData Scalars=\"wall\">");
     b.array(in, "Int32", "wall", 1, wall);
     b.line("      </CellData>");
-    b.line("      <Points>");
-    b.array(in, "Float64", "Points", 3, points);
-    b.line("      </Points>");
-    b.line("      <Lines>");
-    b.array(in, "Int64", "connectivity", 1, connectivity);
-    b.array(in, "Int64", "offsets", 1, offsets);
-    b.line("      </Lines>");
-    b.line("    </Piece>");
+    b.pointsAndLines(points, connectivity, offsets);
     b.save(path);
 }
 
@@ -316,14 +323,7 @@ void writeContactsVtp(const std::string& path, const analysis::ContactFrame& c,
     b.array(in, "Float64", "area", 1, c.area);
     b.array(in, "Float64", "length", 1, c.length);
     b.line("      </CellData>");
-    b.line("      <Points>");
-    b.array(in, "Float64", "Points", 3, points);
-    b.line("      </Points>");
-    b.line("      <Lines>");
-    b.array(in, "Int64", "connectivity", 1, connectivity);
-    b.array(in, "Int64", "offsets", 1, offsets);
-    b.line("      </Lines>");
-    b.line("    </Piece>");
+    b.pointsAndLines(points, connectivity, offsets);
     b.save(path);
 }
 
