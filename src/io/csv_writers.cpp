@@ -16,24 +16,55 @@
 
 namespace granulab::io {
 
+namespace {
+
+std::vector<std::string> splitCells(const std::string& line) {
+    std::vector<std::string> cells;
+    std::size_t start = 0;
+    for (std::size_t comma; (comma = line.find(',', start)) != std::string::npos; start = comma + 1)
+        cells.push_back(line.substr(start, comma - start));
+    cells.push_back(line.substr(start));
+    return cells;
+}
+
+/// A row written under the header `from` in the layout `to`: cells matched by column name, `nan`
+/// for a column the old layout lacked (a scene edited between checkpoint and resume added a
+/// moving wall, say), columns that are gone dropped.
+std::string remapRow(const std::string& line, const std::vector<std::string>& from,
+                     const std::vector<std::string>& to) {
+    const std::vector<std::string> cells = splitCells(line);
+    std::string out;
+    for (std::size_t k = 0; k < to.size(); ++k) {
+        const auto it = std::find(from.begin(), from.end(), to[k]);
+        const auto at = static_cast<std::size_t>(it - from.begin());
+        out += (k ? "," : "") + (it != from.end() && at < cells.size() ? cells[at] : std::string("nan"));
+    }
+    return out;
+}
+
+}  // namespace
+
 SeriesWriter::SeriesWriter(const std::string& path, std::vector<std::string> columns, double resumeTime)
     : m_columns(columns.size()) {
+    std::string header;
+    for (std::size_t k = 0; k < columns.size(); ++k) header += (k ? "," : "") + columns[k];
     std::string kept;
     if (resumeTime >= 0) {
         std::ifstream in(path);
         std::string line;
-        bool header = true;
+        std::vector<std::string> oldColumns;
+        bool first = true;
         while (std::getline(in, line)) {
-            if (header) {
-                header = false;
+            if (first) {
+                first = false;
+                if (line != header) oldColumns = splitCells(line);
                 continue;
             }
             const double t = std::strtod(line.c_str(), nullptr);
-            if (t <= resumeTime) kept += line + "\n";
+            if (t > resumeTime) continue;
+            kept += (oldColumns.empty() ? line : remapRow(line, oldColumns, columns)) + "\n";
         }
     }
-    std::string header;
-    for (std::size_t k = 0; k < columns.size(); ++k) header += (k ? "," : "") + columns[k];
     writeFileAtomically(path, header + "\n" + kept);  // a kill here leaves the old or the new file
     m_file = std::fopen(path.c_str(), "a");
     if (!m_file) throw std::runtime_error("cannot write " + path);

@@ -18,7 +18,9 @@ namespace granulab::io {
 class SeriesWriter {
 public:
     /// Opens `path`. If `resumeTime` >= 0 the existing file is kept up to rows with
-    /// time <= resumeTime (a resumed run continues it); otherwise it is truncated.
+    /// time <= resumeTime (a resumed run continues it; rows of a different header are rewritten
+    /// in the new one, columns matched by name, `nan` where the old one had none); otherwise it
+    /// is truncated.
     SeriesWriter(const std::string& path, std::vector<std::string> columns, double resumeTime = -1);
     ~SeriesWriter();
     SeriesWriter(const SeriesWriter&) = delete;

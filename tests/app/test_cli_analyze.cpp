@@ -283,4 +283,49 @@ TEST(AnalyzeDemFiles, MissingContactFilesAreNamed) {
     EXPECT_NE(r.output.find("contacts_000001.npy"), std::string::npos) << r.output;
 }
 
+TEST(AnalyzeDemFiles, FloorDrawnInPiecesIsOneFloor) {
+    // A floor drawn as three collinear walls (two plates and a stamp between them, gc2d 4.3.2),
+    // none named `floor`: the profile runs over all three, and integrated over x (sum of p times
+    // the window step: every contact lies in 2b/step windows of width 2b) it carries the weight.
+    const test::ScratchDir dir;
+    std::ofstream(dir.path / "bed.toml") << kBed;
+    const std::string pieces =
+        "'wall[0].points=[[0.0,0.0],[5.0,0.0]]' 'wall[0].name=\"plate_a\"' "
+        "'wall[1].points=[[5.0,0.0],[7.0,0.0]]' 'wall[1].name=\"stamp\"' "
+        "'wall[2].points=[[7.0,0.0],[12.0,0.0]]' 'wall[2].name=\"plate_b\"'";
+    // The side walls become walls 3 and 4 (the scene's walls 1 and 2 are now floor pieces).
+    std::ofstream(dir.path / "bed.toml", std::ios::app) << R"([[wall]]
+name = "left_side"
+points = [[0.0, 0.0], [0.0, 20.0]]
+material = "side"
+[[wall]]
+name = "right_side"
+points = [[12.0, 0.0], [12.0, 20.0]]
+material = "side"
+)";
+    auto r = test::runGranulab("run bed.toml -q --out out --set " + pieces, dir.path, 300);
+    ASSERT_EQ(r.status, 0) << r.output;
+    // Windows of 0.4 m stepped by 0.1 m from wall to wall: a floor contact lies at least a grain
+    // radius (0.45 m) from the side walls, so it is counted in 2b/step = 4 windows like any other
+    // (with the default 10 m windows the end windows would miss part of the floor).
+    r = test::runGranulab("analyze out pressure -q --half-width 0.2", dir.path, 60);
+    ASSERT_EQ(r.status, 0) << r.output;
+    const Table t = readTable(dir.path / "out" / "analysis" / "snapshot_000003" / "floor_pressure.csv");
+    bool named = false;
+    double step = 0;
+    for (const auto& n : t.notes) {
+        named = named || n == "floor = plate_a + stamp + plate_b";
+        if (n.rfind("step = ", 0) == 0) step = std::stod(n.substr(7));
+    }
+    EXPECT_TRUE(named);
+    ASSERT_GT(step, 0);
+    double load = 0, weight = 0;
+    for (const auto& row : t.rows)
+        if (!std::isnan(row[t.col("p")])) load += row[t.col("p")] * step;
+    std::vector<std::string> header;
+    for (const auto& g : test::readCsv(dir.path / "out" / "final.csv", header))
+        weight += 10.0 * std::stod(g.at("mass"));
+    EXPECT_NEAR(load, weight, 5e-3 * weight);
+}
+
 }  // namespace

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The shared output writers of every engine (docs/architecture.md "The run loop"): AtomicFile
-// (temporary name + rename), the final.csv contract's column order, and the checkpoint
-// container's identity check.
+// (temporary name + rename), the final.csv contract's column order, the checkpoint
+// container's identity check, and series.csv kept across a resume.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -11,6 +11,7 @@
 #include "../support.hpp"
 #include "io/atomic_file.hpp"
 #include "io/checkpoint.hpp"
+#include "io/csv_writers.hpp"
 #include "io/final_csv.hpp"
 
 using namespace granulab;
@@ -105,4 +106,23 @@ TEST(OutputWriters, CheckpointContainerChecksEngineIdentityAndBlobLength) {
     EXPECT_NE(message({"toy", {{"toy.mode", "a"}, {"particles", "4"}}, {}}, 5).find("another scene"),
               std::string::npos);
     EXPECT_NE(message(header, 4).find("not 5 bytes"), std::string::npos);  // an engine reading too little
+}
+
+TEST(OutputWriters, SeriesKeptAcrossAResumeWhoseColumnsChanged) {
+    // A scene edited between checkpoint and resume (a floor stamp that now moves) adds columns:
+    // the rows up to the checkpoint are rewritten in the new layout by column name, nan where the
+    // old run had no such column; the rows after the checkpoint time are dropped.
+    const test::ScratchDir scratch;
+    const std::string path = (scratch.path / "series.csv").string();
+    test::writeText(path, "time,a,b\n0,1,2\n0.5,3,4\n1,5,6\n");
+    {
+        io::SeriesWriter same(path, {"time", "a", "b"}, 0.5);
+        same.row({0.75, 7, 8});
+    }
+    EXPECT_EQ(test::readText(path), "time,a,b\n0,1,2\n0.5,3,4\n0.75,7,8\n");
+    {
+        io::SeriesWriter changed(path, {"time", "b", "stamp_dy", "a"}, 0.5);
+        changed.row({1, 10, 11, 12});
+    }
+    EXPECT_EQ(test::readText(path), "time,b,stamp_dy,a\n0,2,nan,1\n0.5,4,nan,3\n1,10,11,12\n");
 }

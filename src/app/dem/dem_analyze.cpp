@@ -325,8 +325,8 @@ private:
         table.add("p", "N/m");
         table.add("p_n", "N/m");
         table.add("contacts", "1");
-        std::optional<std::int32_t> floor;
-        double floorLevel = std::numeric_limits<double>::infinity();
+        // Straight horizontal walls with contacts and their level [m]: floor candidates.
+        std::vector<std::pair<std::int32_t, double>> horizontalWalls;
         for (const std::int32_t w : selectedWalls()) {
             analysis::WallPressure r;
             try {
@@ -347,9 +347,7 @@ private:
                 "wall {:>12}: {} = {:.5g} N/m over l = {:.4g} m ({} contacts), F = ({:.5g}, {:.5g}) N",
                 wallName(w), r.straight ? "p" : "p_n (bent wall)", r.straight ? r.pressure : r.normalPressure,
                 r.length, r.contacts, r.force.x, r.force.y));
-            // The floor: a straight horizontal wall with contacts, the lowest one (or the named one).
-            const bool horizontal = r.straight && std::abs(r.normal.y) > 0.99;
-            if (horizontal && r.contacts > 0) {
+            if (r.straight && std::abs(r.normal.y) > 0.99 && r.contacts > 0) {
                 double level = 0;
                 std::size_t segs = 0;
                 for (std::size_t k = 0; k < m_frame.walls.size(); ++k)
@@ -357,34 +355,31 @@ private:
                         level += 0.5 * (m_frame.walls.a[k].y + m_frame.walls.b[k].y);
                         ++segs;
                     }
-                level /= static_cast<double>(std::max<std::size_t>(segs, 1));
-                const bool named = wallName(w) == "floor";
-                if (named || (level < floorLevel && !(floor && wallName(*floor) == "floor"))) {
-                    floor = w;
-                    floorLevel = named ? -std::numeric_limits<double>::infinity() : level;
-                }
+                horizontalWalls.emplace_back(w, level / static_cast<double>(std::max<std::size_t>(segs, 1)));
             }
         }
         write(table);
+        const std::vector<std::int32_t> floorWalls = floorOf(horizontalWalls);
         // Without a straight horizontal wall (a box drawn as one polyline), the floor is the lowest
         // horizontal segment and every segment on its line, with the wall contacts on that line.
         const analysis::ContactFrame* contacts = &m_frame.contacts;
         const analysis::WallSegments* segments = &m_frame.walls;
         analysis::ContactFrame floorContacts;
         analysis::WallSegments floorSegments;
-        std::string floorName = floor ? wallName(*floor) : std::string();
-        if (!floor) {
+        analysis::PressureProfileParams pp;
+        pp.walls = floorWalls;
+        std::string floorName;
+        for (const std::int32_t w : floorWalls) floorName += (floorName.empty() ? "" : " + ") + wallName(w);
+        if (floorWalls.empty()) {
             if (!floorFromSegments(floorContacts, floorSegments)) {
                 say("no horizontal wall segment with contacts: no floor pressure profile");
                 return;
             }
-            floor = kFloorIndex;
+            pp.walls = {kFloorIndex};
             contacts = &floorContacts;
             segments = &floorSegments;
             floorName = "the lowest horizontal segments";
         }
-        analysis::PressureProfileParams pp;
-        pp.walls = {*floor};
         pp.halfWidth = m_opt.halfWidth > 0 ? m_opt.halfWidth : 5 * m_frame.meanDiameter;
         pp.step = 0.5 * pp.halfWidth;
         const analysis::PileScale scale = analysis::measurePileScale(m_frame.grains, *contacts, *segments,
@@ -404,6 +399,20 @@ private:
     }
 
     static constexpr std::int32_t kFloorIndex = 1 << 30;  ///< the synthetic wall of floorFromSegments
+
+    /// The floor among the straight horizontal walls with contacts (wall, level [m]): the wall named
+    /// `floor`, else the lowest one together with every other within half a grain diameter of its
+    /// level (a floor drawn in pieces: two plates and a stamp between them, gc2d 4.3.2).
+    std::vector<std::int32_t> floorOf(const std::vector<std::pair<std::int32_t, double>>& horizontal) const {
+        for (const auto& [w, level] : horizontal)
+            if (wallName(w) == "floor") return {w};
+        double lowest = std::numeric_limits<double>::infinity();
+        for (const auto& [w, level] : horizontal) lowest = std::min(lowest, level);
+        std::vector<std::int32_t> out;
+        for (const auto& [w, level] : horizontal)
+            if (level <= lowest + 0.5 * m_frame.meanDiameter) out.push_back(w);
+        return out;
+    }
 
     /// The floor of a scene without a straight horizontal wall: the lowest line of horizontal wall
     /// segments that carries wall contacts (a box drawn as one polyline, or a polygon body whose top
