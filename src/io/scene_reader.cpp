@@ -64,6 +64,7 @@ void readOutput(TableReader& r, model::OutputDef& o) {
     r.number("checkpoint_interval", o.checkpointInterval);
     r.boolean("vtk", o.vtk);
     r.boolean("contacts", o.contacts);
+    r.strings("analyses", o.analyses);
 }
 
 /// Reads the sections of the running engine (nullptr: run.engine is unknown, its error is

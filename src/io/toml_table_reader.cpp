@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -136,6 +137,19 @@ bool TableReader::string(const std::string& key, std::string& out) {
         return false;
     }
     out = n->value<std::string>().value_or("");
+    return true;
+}
+
+bool TableReader::strings(const std::string& key, std::vector<std::string>& out) {
+    const toml::node* n = node(key);
+    if (!n) return false;
+    const toml::array* a = n->as_array();
+    if (!a || !std::all_of(a->begin(), a->end(), [](const toml::node& e) { return e.is_string(); })) {
+        typeError(key, *n, "an array of strings");
+        return false;
+    }
+    out.clear();
+    for (const auto& e : *a) out.push_back(e.value<std::string>().value_or(""));
     return true;
 }
 

@@ -44,6 +44,8 @@ public:
     bool integer(const std::string& key, std::int64_t& out);
     bool boolean(const std::string& key, bool& out);
     bool string(const std::string& key, std::string& out);
+    /// Array of strings (names are checked by validate()).
+    bool strings(const std::string& key, std::vector<std::string>& out);
     /// A string that must be one of `allowed`.
     bool choice(const std::string& key, std::string& out, const std::vector<std::string>& allowed);
     /// Array of `count` finite numbers.

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <map>
 
+#include "analysis/dem_analyses.hpp"
 #include "core/limits.hpp"
 #include "core/suggest.hpp"
 #include "geom/polygon.hpp"
@@ -23,6 +24,29 @@
 namespace granulab::io {
 
 namespace {
+
+/// output.analyses: names of `granulab analyze` that need no command-line option, and the files
+/// they read (snapshots; contact files for the force analyses).
+void checkInRunAnalyses(const model::OutputDef& o, Diagnostics& d) {
+    std::vector<std::string> names;
+    for (const auto& a : analysis::kDemAnalyses) names.push_back(a.name);
+    for (const std::string& name : o.analyses) {
+        const analysis::DemAnalysisInfo* a = analysis::findDemAnalysis(name);
+        if (!a)
+            d.error(o.loc, "output.analyses",
+                    fmt::format("'{}' is not an analysis{}; allowed: {}", name, didYouMean(name, names),
+                                joinList(names)));
+        else if (a->needsFlag)
+            d.error(o.loc, "output.analyses",
+                    fmt::format("'{}' needs {}: run granulab analyze DIR {} {} ... after the run", name,
+                                a->needsFlag, name, a->needsFlag));
+        else if (a->needsContacts && !o.contacts)
+            d.error(o.loc, "output.analyses",
+                    fmt::format("'{}' reads the contact files: set output.contacts = true", name));
+    }
+    if (!o.analyses.empty() && !o.vtk)
+        d.error(o.loc, "output.analyses", "the analyses read the snapshots: set output.vtk = true");
+}
 
 class Checker {
 public:
@@ -195,6 +219,7 @@ void checkStatic(const model::SceneDef& sc, Checker& c, const std::vector<std::s
     c.nonNegative(sc.output.loc, "output.snapshot_interval", sc.output.snapshotInterval, "s");
     c.nonNegative(sc.output.loc, "output.series_interval", sc.output.seriesInterval, "s");
     c.nonNegative(sc.output.loc, "output.checkpoint_interval", sc.output.checkpointInterval, "s");
+    checkInRunAnalyses(sc.output, d);
 }
 
 /// The gc2d GENERATE_BLOCK keys of block k (spec section 6.5): grid, jitter, velocity ranges.

@@ -70,6 +70,10 @@ void checkEdmdDef(const model::SceneDef& sc, Diagnostics& d) {
         {"output.checkpoint_interval", sc.output.checkpointInterval}};
     for (const auto& [key, value] : intervals)
         if (!(value >= 0)) d.error(sc.output.loc, key, fmt::format("must be >= 0 [s], got {}", value));
+    if (!sc.output.analyses.empty())
+        d.error(sc.output.loc, "output.analyses",
+                "is for dem runs; an edmd run writes its gas analyses at every snapshot with "
+                "edmd.analysis_files = true");
     // The box / count / volume-fraction triangle: exactly two of the three.
     const int given = (!e.box.empty() ? 1 : 0) + (e.count > 0 ? 1 : 0) + (e.volumeFraction > 0 ? 1 : 0);
     if (e.count < 0) d.error(loc, "edmd.count", fmt::format("must be > 0, got {}", e.count));

@@ -33,6 +33,8 @@ struct OutputDef {
     bool vtk = true;
     /// DEM: the contact file and force-network line set of every snapshot (io/contact_file.hpp)
     bool contacts = true;
+    /// DEM: analyses run at every snapshot (the names of `granulab analyze`, analysis/dem_analyses.hpp)
+    std::vector<std::string> analyses;
     SourceLoc loc;
 };
 

@@ -283,6 +283,43 @@ TEST(AnalyzeDemFiles, MissingContactFilesAreNamed) {
     EXPECT_NE(r.output.find("contacts_000001.npy"), std::string::npos) << r.output;
 }
 
+TEST(AnalyzeDemFiles, InRunAnalysesEqualTheAnalysisAfterTheRun) {
+    // output.analyses writes, at every snapshot and during the run, the tables that `granulab
+    // analyze --at T` writes afterwards: the same code on the same files, byte for byte.
+    const test::ScratchDir dir;
+    std::ofstream(dir.path / "bed.toml") << kBed;
+    auto r = test::runGranulab(
+        "run bed.toml -q --out out --set run.end_time=2.0 'output.analyses=[\"pressure\", \"packing\"]'",
+        dir.path, 300);
+    ASSERT_EQ(r.status, 0) << r.output;
+    for (const char* snap : {"snapshot_000000", "snapshot_000001", "snapshot_000002"})
+        for (const char* table : {"wall_mean_pressure.csv", "packing_fraction.csv"})
+            EXPECT_TRUE(fs::exists(dir.path / "out" / "analysis" / snap / table)) << snap << "/" << table;
+    // At t = 0 the lattice block has not reached the floor yet: no floor profile then.
+    EXPECT_FALSE(fs::exists(dir.path / "out" / "analysis" / "snapshot_000000" / "floor_pressure.csv"));
+    EXPECT_TRUE(fs::exists(dir.path / "out" / "analysis" / "snapshot_000002" / "floor_pressure.csv"));
+    const fs::path inRun = dir.path / "out" / "analysis" / "snapshot_000001";
+    const std::string pressure = test::readText(inRun / "floor_pressure.csv");
+    const std::string packing = test::readText(inRun / "packing_fraction.csv");
+    r = test::runGranulab("analyze out pressure packing --at 1.0 -q", dir.path, 60);
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_EQ(test::readText(inRun / "floor_pressure.csv"), pressure);
+    EXPECT_EQ(test::readText(inRun / "packing_fraction.csv"), packing);
+
+    // Names are checked with the scene: unknown, needing an option, or needing the contact files.
+    const std::pair<const char*, const char*> bad[] = {
+        {"'output.analyses=[\"presure\"]'", "did you mean 'pressure'"},
+        {"'output.analyses=[\"janssen\"]'", "needs --silo"},
+        {"'output.analyses=[\"forces\"]' output.contacts=false", "output.contacts = true"},
+    };
+    for (const auto& [set, message] : bad) {
+        r = test::runGranulab(std::string("run bed.toml -q --out bad --set ") + set, dir.path, 60);
+        EXPECT_EQ(r.status, 2) << set;
+        EXPECT_NE(r.output.find(message), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find("output.analyses"), std::string::npos) << r.output;
+    }
+}
+
 TEST(AnalyzeDemFiles, FloorDrawnInPiecesIsOneFloor) {
     // A floor drawn as three collinear walls (two plates and a stamp between them, gc2d 4.3.2),
     // none named `floor`: the profile runs over all three, and integrated over x (sum of p times

@@ -15,6 +15,7 @@
 #include <optional>
 #include <set>
 
+#include "analysis/dem_analyses.hpp"
 #include "analysis/dem_coarse_grain.hpp"
 #include "analysis/dem_coordination.hpp"
 #include "analysis/dem_force_stats.hpp"
@@ -43,26 +44,6 @@ namespace {
 [[noreturn]] void badOption(const std::string& option, const std::string& what) {
     throw SceneError(makeDiagnostic("granulab analyze " + option, 0, "", what));
 }
-
-/// The analyses of a dem run, in the order they run; `defaultSet`: run when none is named.
-struct DemAnalysisName {
-    const char* name;
-    const char* what;
-    bool defaultSet;
-};
-constexpr DemAnalysisName kAnalyses[] = {
-    {"pressure", "mean pressure on every wall and the floor's profile p(x) (Eq. 2.36-2.40)", true},
-    {"forces", "force directions P(alpha) and magnitudes P(F/<F>) (spec 7.3)", true},
-    {"coordination", "contacts per grain, P(K), rattlers (spec 7.4)", true},
-    {"repose", "angle of repose: top-centroid fit and integral 2a/b^2 (spec 7.5)", true},
-    {"packing", "local packing fraction with the hull correction (Eq. 2.44/2.45)", true},
-    {"stress", "stress tensors on test areas, principal axes, Psi (Eq. 2.52)", true},
-    {"coarse", "kernel coarse-grained density, velocity and stress fields", false},
-    {"janssen", "silo depth profiles and the Janssen fit of k and mu_j (spec 8.3; needs --silo)", false},
-    {"strain", "displacement, strain, nu, E, K against --reference (Eq. 4.2-4.5, 4.11)", false},
-    {"persistence", "contacts of --reference still present (spec 7.11)", false},
-    {"roughness", "surface-roughness power spectrum of the flanks or --range (spec 7.11)", false},
-};
 
 /// One snapshot of the run: its index, time and files.
 struct SnapshotFiles {
@@ -676,15 +657,13 @@ private:
 std::vector<std::string> chosenAnalyses(const AnalyzeOptions& opt) {
     std::vector<std::string> out;
     for (const std::string& w : opt.what) {
-        const bool known = std::any_of(std::begin(kAnalyses), std::end(kAnalyses),
-                                       [&](const DemAnalysisName& a) { return w == a.name; });
-        if (!known) {
+        if (!analysis::findDemAnalysis(w)) {
             std::string list;
-            for (const auto& a : kAnalyses) list += fmt::format("\n  {:<12} {}", a.name, a.what);
+            for (const auto& a : analysis::kDemAnalyses) list += fmt::format("\n  {:<12} {}", a.name, a.what);
             badOption(w, fmt::format("unknown analysis; the analyses of a dem run are:{}", list));
         }
     }
-    for (const auto& a : kAnalyses)
+    for (const auto& a : analysis::kDemAnalyses)
         if (opt.what.empty() ? a.defaultSet
                              : std::find(opt.what.begin(), opt.what.end(), a.name) != opt.what.end())
             out.push_back(a.name);
@@ -725,6 +704,45 @@ int demAnalyze(const AnalyzeOptions& opt, const nlohmann::json& summary) {
             "{}/analysis/snapshot_{:06d}\n",
             tables, opt.dir, opt.dir, chosen.back()->index);
     return kExitOk;
+}
+
+namespace {
+
+/// A diagnostic as one line of the run's warnings: no "error: " tier, no line breaks.
+std::string oneLine(std::string text) {
+    if (text.rfind("error: ", 0) == 0) text.erase(0, 7);
+    std::replace(text.begin(), text.end(), '\n', ' ');
+    while (!text.empty() && text.back() == ' ') text.pop_back();
+    return text;
+}
+
+}  // namespace
+
+std::vector<std::string> demAnalyzeSnapshot(const std::string& dir, int index,
+                                            const std::vector<std::string>& what,
+                                            const nlohmann::json& summary) {
+    AnalyzeOptions opt;
+    opt.dir = dir;
+    opt.what = what;
+    opt.quiet = true;
+    std::vector<std::string> failed;
+    try {
+        const std::vector<SnapshotFiles> snaps = listSnapshots(dir);
+        const auto it = std::find_if(snaps.begin(), snaps.end(),
+                                     [&](const SnapshotFiles& s) { return s.index == index; });
+        if (it == snaps.end()) return {fmt::format("snapshot {} is not in snapshots.pvd", index)};
+        SnapshotAnalysis a(opt, summary, *it, snaps);
+        for (const std::string& w : chosenAnalyses(opt)) {
+            try {
+                a.run(w);
+            } catch (const std::exception& e) {  // SceneError or invalid_argument: no grains yet, ...
+                failed.push_back(oneLine(e.what()));
+            }
+        }
+    } catch (const std::exception& e) {
+        failed.push_back(oneLine(e.what()));
+    }
+    return failed;
 }
 
 }  // namespace granulab::app

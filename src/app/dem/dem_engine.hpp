@@ -4,6 +4,7 @@
 #pragma once
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "app/analyze.hpp"
 #include "app/simulation.hpp"
@@ -25,5 +26,13 @@ int demInfo(const std::string& scenePath, const model::SceneDef& scene);
 /// `granulab analyze DIR [what...]` of a dem run (gc2d spec section 7): reads the snapshots'
 /// particles, walls and contact files and writes DIR/analysis/snapshot_NNNNNN/<table>.csv.
 int demAnalyze(const AnalyzeOptions& options, const nlohmann::json& summary);
+
+/// The in-run analyses (`output.analyses`) of snapshot `index` of the run in `dir`, just written:
+/// the same tables as `granulab analyze DIR what... --at T`. `summary` holds what the files lack
+/// ("walls", "gravity_magnitude"). Never throws: returns one line per analysis that could not run
+/// (no grains yet, no contact file at this snapshot, ...), for the run's warnings.
+std::vector<std::string> demAnalyzeSnapshot(const std::string& dir, int index,
+                                            const std::vector<std::string>& what,
+                                            const nlohmann::json& summary);
 
 }  // namespace granulab::app

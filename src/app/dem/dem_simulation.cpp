@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "app/dem/dem_contacts.hpp"
 #include "app/dem/dem_engine.hpp"
@@ -233,6 +234,7 @@ public:
         // snapshot); a snapshot at a step that was not recorded has no contact file.
         if (wantsContacts() && m_world.contactLog().step == m_world.stepIndex())
             writeContactSnapshot(dir, index, m_world, pvd);
+        if (!m_scene.output.analyses.empty()) analyzeSnapshot(dir, index);
     }
 
     void writeFinal(const std::string& dir) override {
@@ -383,6 +385,21 @@ public:
     void loadState(std::istream& in) override { m_world.loadState(in); }
 
 private:
+    /// output.analyses at a snapshot: the tables of `granulab analyze` from the files just written.
+    /// An analysis that cannot run yet (a pour's first snapshot has no grains) becomes one warning
+    /// per analysis and message kind, not a failed run.
+    void analyzeSnapshot(const std::string& dir, int index) {
+        nlohmann::json summary;
+        summary["walls"] = nlohmann::json::array();
+        for (const auto& w : m_world.walls().walls) summary["walls"].push_back(w.name);
+        summary["gravity_magnitude"] = norm(m_world.gravity());
+        for (const std::string& problem : demAnalyzeSnapshot(dir, index, m_scene.output.analyses, summary)) {
+            const std::string line = "output.analyses: " + problem;
+            if (m_analysisProblems.insert(line).second)
+                m_warnings.push_back(fmt::format("{} (first at snapshot {})", line, index));
+        }
+    }
+
     const model::SceneDef& m_scene;
     SimulationOptions m_options;
     std::vector<std::string> m_warnings;
@@ -394,6 +411,7 @@ private:
     std::int64_t m_loopStartStep = 0;
     std::uint64_t m_guardSkips = 0;  ///< contact evaluations skipped by the overlap guard
     dem::Energies m_lastEnergy;
+    std::set<std::string> m_analysisProblems;  ///< in-run analysis problems already warned about
 };
 
 }  // namespace
