@@ -138,6 +138,18 @@ TEST_F(AnalyzeDem, DefaultSetWritesEveryTableWithUnits) {
     EXPECT_NE(r.output.find("floor"), std::string::npos) << r.output;
 }
 
+TEST_F(AnalyzeDem, ReposeOverAGivenRangeIsATableNote) {
+    // --range: the integral method over a chosen half-pile (a crater's slopes), in the table's notes.
+    const auto r = test::runGranulab("analyze out repose --range 0:6 --range 6:12 -q", s_dir->path, 120);
+    ASSERT_EQ(r.status, 0) << r.output;
+    const Table t = readTable(out() / "analysis" / "snapshot_000003" / "repose_profile.csv");
+    int found = 0;
+    for (const auto& n : t.notes)
+        for (const char* key : {"repose_range_1_deg = ", "repose_range_2_deg = ", "range_2_x1 = 12 m"})
+            if (n.rfind(key, 0) == 0) ++found;
+    EXPECT_EQ(found, 3) << r.output;
+}
+
 TEST_F(AnalyzeDem, WallForcesAgreeWithTheRunAndCarryTheWeight) {
     ASSERT_EQ(test::runGranulab("analyze out pressure -q", s_dir->path, 120).status, 0);
     const Table t = readTable(out() / "analysis" / "snapshot_000003" / "wall_mean_pressure.csv");

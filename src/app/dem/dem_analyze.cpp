@@ -472,17 +472,24 @@ private:
 
     void repose() {
         const analysis::Repose r = analysis::angleOfRepose(surface());
-        write(analysis::toTable(r));
+        analysis::Table table = analysis::toTable(r);
+        std::vector<std::string> lines;
+        // --range: the integral method over a given half-pile (a crater's slopes A and B), as notes.
+        for (std::size_t k = 0; k < m_opt.ranges.size(); ++k) {
+            const auto [x0, x1] = parseRange("--range", m_opt.ranges[k]);
+            const auto ir = analysis::integralRepose(r.profile, x0, x1);
+            table.notes.push_back(fmt::format("range_{}_x0 = {:.10g} m", k + 1, x0));
+            table.notes.push_back(fmt::format("range_{}_x1 = {:.10g} m", k + 1, x1));
+            table.notes.push_back(fmt::format("repose_range_{}_deg = {:.10g} deg", k + 1, ir.angleDeg));
+            lines.push_back(fmt::format("repose over [{:.4g}, {:.4g}] m: integral 2a/b^2 {:.2f} deg", x0, x1,
+                                        ir.angleDeg));
+        }
+        write(table);
         say(fmt::format(
             "repose: top-centroid fit {:.2f} / {:.2f} deg (left / right), integral 2a/b^2 {:.2f} / "
             "{:.2f} deg",
             r.left.angleDeg, r.right.angleDeg, r.integralLeft.angleDeg, r.integralRight.angleDeg));
-        for (const std::string& range : m_opt.ranges) {
-            const auto [x0, x1] = parseRange("--range", range);
-            const auto ir = analysis::integralRepose(r.profile, x0, x1);
-            say(fmt::format("repose over [{:.4g}, {:.4g}] m: integral 2a/b^2 {:.2f} deg", x0, x1,
-                            ir.angleDeg));
-        }
+        for (const std::string& line : lines) say(line);
     }
 
     void packing() {
