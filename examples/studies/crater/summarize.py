@@ -31,29 +31,22 @@ import re
 import sys
 
 
+def _piles_table():
+    """The table reader of ../piles/summarize.py (same file name as this one, so loaded by path)."""
+    import importlib.util
+    here = os.path.dirname(os.path.abspath(__file__))
+    spec = importlib.util.spec_from_file_location('piles_summarize', os.path.join(here, '..', 'piles', 'summarize.py'))
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module.table
+
+
+_TABLE = _piles_table()
+
+
 def notes_rows(path):
-    notes, rows, header = {}, [], None
-    if not os.path.exists(path):
-        return notes, rows
-    with open(path) as f:
-        for line in f:
-            if line.startswith('#'):
-                body = line[1:].strip()
-                if '=' in body:
-                    k, v = body.split('=', 1)
-                    try:
-                        notes[k.strip()] = float(v.split()[0])
-                    except (ValueError, IndexError):
-                        pass
-                continue
-            if not line.strip():
-                continue
-            cells = line.strip().split(',')
-            if header is None:
-                header = [c.split(' [')[0] for c in cells]
-            else:
-                rows.append(dict(zip(header, (float(c) for c in cells))))
-    return notes, rows
+    """Notes and rows of an analysis table; empty when the analysis wrote none."""
+    return _TABLE(path) if os.path.exists(path) else ({}, [])
 
 
 def scene_value(scene, section, key):
