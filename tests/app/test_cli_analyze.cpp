@@ -337,22 +337,17 @@ TEST(AnalyzeDemFiles, FloorDrawnInPiecesIsOneFloor) {
     // none named `floor`: the profile runs over all three, and integrated over x (sum of p times
     // the window step: every contact lies in 2b/step windows of width 2b) it carries the weight.
     const test::ScratchDir dir;
-    std::ofstream(dir.path / "bed.toml") << kBed;
-    const std::string pieces =
-        "'wall[0].points=[[0.0,0.0],[5.0,0.0]]' 'wall[0].name=\"plate_a\"' "
-        "'wall[1].points=[[5.0,0.0],[7.0,0.0]]' 'wall[1].name=\"stamp\"' "
-        "'wall[2].points=[[7.0,0.0],[12.0,0.0]]' 'wall[2].name=\"plate_b\"'";
-    // The side walls become walls 3 and 4 (the scene's walls 1 and 2 are now floor pieces).
-    std::ofstream(dir.path / "bed.toml", std::ios::app) << R"([[wall]]
-name = "left_side"
-points = [[0.0, 0.0], [0.0, 20.0]]
-material = "side"
-[[wall]]
-name = "right_side"
-points = [[12.0, 0.0], [12.0, 20.0]]
-material = "side"
-)";
-    auto r = test::runGranulab("run bed.toml -q --out out --set " + pieces, dir.path, 300);
+    // kBed with its one floor wall cut into three (the side walls stay as they are).
+    std::string scene = kBed;
+    const std::string floor = "name = \"floor\"\npoints = [[0.0, 0.0], [12.0, 0.0]]\nmaterial = \"grain\"\n";
+    const auto at = scene.find(floor);
+    ASSERT_NE(at, std::string::npos);
+    scene.replace(at, floor.size(),
+                  "name = \"plate_a\"\npoints = [[0.0, 0.0], [5.0, 0.0]]\nmaterial = \"grain\"\n"
+                  "[[wall]]\nname = \"stamp\"\npoints = [[5.0, 0.0], [7.0, 0.0]]\nmaterial = \"grain\"\n"
+                  "[[wall]]\nname = \"plate_b\"\npoints = [[7.0, 0.0], [12.0, 0.0]]\nmaterial = \"grain\"\n");
+    std::ofstream(dir.path / "bed.toml") << scene;
+    auto r = test::runGranulab("run bed.toml -q --out out", dir.path, 300);
     ASSERT_EQ(r.status, 0) << r.output;
     // Windows of 0.4 m stepped by 0.1 m from wall to wall: a floor contact lies at least a grain
     // radius (0.45 m) from the side walls, so it is counted in 2b/step = 4 windows like any other

@@ -31,22 +31,8 @@ import re
 import sys
 
 
-def _piles_table():
-    """The table reader of ../piles/summarize.py (same file name as this one, so loaded by path)."""
-    import importlib.util
-    here = os.path.dirname(os.path.abspath(__file__))
-    spec = importlib.util.spec_from_file_location('piles_summarize', os.path.join(here, '..', 'piles', 'summarize.py'))
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module.table
-
-
-_TABLE = _piles_table()
-
-
-def notes_rows(path):
-    """Notes and rows of an analysis table; empty when the analysis wrote none."""
-    return _TABLE(path) if os.path.exists(path) else ({}, [])
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..'))
+from study_tables import table as notes_rows  # noqa: E402  (examples/studies/study_tables.py)
 
 
 def scene_value(scene, section, key):

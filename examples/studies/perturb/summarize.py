@@ -42,8 +42,9 @@ def _piles_summary():
     return module
 
 
-_PILES = _piles_summary()
-figures, table = _PILES.figures, _PILES.table
+figures = _piles_summary().figures
+sys.path.insert(0, os.path.join(HERE, '..'))
+from study_tables import table  # noqa: E402  (examples/studies/study_tables.py)
 
 G = 9.81
 

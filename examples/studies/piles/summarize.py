@@ -24,28 +24,8 @@ import math
 import os
 import sys
 
-
-def table(path):
-    notes, rows, header = {}, [], None
-    with open(path) as f:
-        for line in f:
-            if line.startswith('# '):
-                body = line[2:].strip()
-                if '=' in body:
-                    k, v = body.split('=', 1)
-                    try:
-                        notes[k.strip()] = float(v.split()[0])
-                    except (ValueError, IndexError):
-                        pass
-                continue
-            if not line.strip():
-                continue
-            cells = line.strip().split(',')
-            if header is None:
-                header = [c.split(' [')[0] for c in cells]
-            else:
-                rows.append(dict(zip(header, (float(c) for c in cells))))
-    return notes, rows
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..'))
+from study_tables import table  # noqa: E402  (examples/studies/study_tables.py)
 
 
 def figures(out):

@@ -248,9 +248,7 @@ public:
         nlohmann::json js;
         js["resumed_from_step"] = report.resumed ? m_loopStartStep : 0;
         js["wall_segments"] = m_world.walls().segments.size();
-        js["walls"] = nlohmann::json::array();  // names in wall-index order (`granulab analyze --wall`)
-        for (const auto& w : m_world.walls().walls) js["walls"].push_back(w.name);
-        js["gravity_magnitude"] = norm(m_world.gravity());  // [m/s^2] at the end of the run
+        js.update(analysisKeys());  // at the end of the run
         js["dt"] = m_dt;
         js["steps"] = steps;
         js["particle_steps_per_s"] =
@@ -385,15 +383,22 @@ public:
     void loadState(std::istream& in) override { m_world.loadState(in); }
 
 private:
+    /// What `granulab analyze` reads from summary.json besides the snapshot files: the wall names
+    /// in wall-index order (`--wall`, the floor) and |g| [m/s^2] now.
+    nlohmann::json analysisKeys() const {
+        nlohmann::json js;
+        js["walls"] = nlohmann::json::array();
+        for (const auto& w : m_world.walls().walls) js["walls"].push_back(w.name);
+        js["gravity_magnitude"] = norm(m_world.gravity());
+        return js;
+    }
+
     /// output.analyses at a snapshot: the tables of `granulab analyze` from the files just written.
     /// An analysis that cannot run yet (a pour's first snapshot has no grains) becomes one warning
     /// per analysis and message kind, not a failed run.
     void analyzeSnapshot(const std::string& dir, int index) {
-        nlohmann::json summary;
-        summary["walls"] = nlohmann::json::array();
-        for (const auto& w : m_world.walls().walls) summary["walls"].push_back(w.name);
-        summary["gravity_magnitude"] = norm(m_world.gravity());
-        for (const std::string& problem : demAnalyzeSnapshot(dir, index, m_scene.output.analyses, summary)) {
+        for (const std::string& problem :
+             demAnalyzeSnapshot(dir, index, m_scene.output.analyses, analysisKeys())) {
             const std::string line = "output.analyses: " + problem;
             if (m_analysisProblems.insert(line).second)
                 m_warnings.push_back(fmt::format("{} (first at snapshot {})", line, index));
