@@ -26,7 +26,7 @@ inline dem::World makeWorldFromToml(const std::string& toml,
                                     const std::vector<io::Override>& overrides = {}) {
     const model::SceneDef scene = readSceneText(toml, "test.toml", overrides);
     const dem::PreparedScene v = app::checkAndPrepareDem(scene);
-    dem::World w = dem::makeWorld(scene, v.initial);
+    dem::World w = dem::makeWorld(scene, v.initial, v.fields);
     w.initialize();
     return w;
 }

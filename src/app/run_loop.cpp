@@ -139,6 +139,7 @@ int runSimulation(Simulation& sim, const model::SceneDef& scene, const RunContex
                         ctx.resumeDir, sim.time(), scene.run.endTime)));
 
     io::SeriesWriter seriesFile(ctx.dir + "/series.csv", sim.seriesColumns(), resumed ? sim.time() : -1.0);
+    sim.openOutputs(ctx.dir, resumed ? sim.time() : -1.0);
     io::PvdWriter pvd(ctx.dir + "/snapshots.pvd");
     if (resumed && fs::exists(ctx.dir + "/snapshots.pvd")) {
         pvd.load();

@@ -26,6 +26,7 @@ enum SimStatus : std::uint32_t {
     kSimOverlap = 1u << 2,      ///< particles interpenetrate beyond the engine's tolerance
     kSimInterrupted = 1u << 3,  ///< SIGINT/SIGTERM: stopped after a whole step or event
     kSimStalled = 1u << 4,      ///< no progress: a clock standing still, a pre-run that cannot end
+    kSimInputFailed = 1u << 5,  ///< an input read during the run (a flow field) could not be used
 };
 
 /// Where an advance stops: at simulated time `time` [s] or when the engine's count (steps,
@@ -115,6 +116,12 @@ public:
     virtual std::string diagnose(std::uint32_t status) const = 0;
 
     // ---- outputs -----------------------------------------------------------------------------
+    /// Opens the engine's own per-row files in `dir` once before the first row (a resumed run:
+    /// `resumeTime` >= 0, rows after it are dropped, as for series.csv). Default: none.
+    virtual void openOutputs(const std::string& dir, double resumeTime) {
+        (void)dir;
+        (void)resumeTime;
+    }
     virtual std::vector<std::string> seriesColumns() const = 0;
     /// The series row at the current state (may update interval averages kept for the next row).
     virtual std::vector<double> seriesRow() = 0;

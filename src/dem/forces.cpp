@@ -28,9 +28,10 @@ void computeForces(model::ParticleStore& s, const model::WallSet& walls, Neighbo
                    ContactLog* log) noexcept {
     GL_ASSERT(wallForce.size() == walls.walls.size(), "one force per wall");
     const std::size_t n = s.size();
+    const Vec2 weightG = body.weight ? body.gravity : Vec2{};
     for (std::size_t i = 0; i < n; ++i) {
-        s.fx[i] = s.mass[i] * body.gravity.x - body.gamma * s.vx[i];
-        s.fy[i] = s.mass[i] * body.gravity.y - body.gamma * s.vy[i];
+        s.fx[i] = s.mass[i] * weightG.x - body.gamma * s.vx[i];
+        s.fy[i] = s.mass[i] * weightG.y - body.gamma * s.vy[i];
         s.torque[i] = -body.gammaRotation * s.omega[i];
     }
     if (body.springs)
@@ -55,35 +56,37 @@ void computeForces(model::ParticleStore& s, const model::WallSet& walls, Neighbo
         }
     }
     shapes.update(s);
-    detail::forEachBucket(
-        list.pairs, laws, [&](auto* nT, auto* dT, auto* tT, std::uint32_t b, std::uint32_t e) {
-            using N = std::remove_pointer_t<decltype(nT)>;
-            using D = std::remove_pointer_t<decltype(dT)>;
-            using T = std::remove_pointer_t<decltype(tT)>;
-            if constexpr (kAreaForm<N, D, T>) {
-                detail::areaPairs<N, D, T>(s, list.pairs, b, e, laws, drift, dt, trialHistory, stats, shapes,
-                                           log);
-            } else if constexpr (kDepthForm<N, D, T>) {
-                if (laws.hasRolling())
-                    detail::diskPairs<N, D, T, true>(s, list.pairs, b, e, laws, drift, dt, body.overlapGuard,
-                                                     trialHistory, stats, log);
-                else
-                    detail::diskPairs<N, D, T, false>(s, list.pairs, b, e, laws, drift, dt, body.overlapGuard,
-                                                      trialHistory, stats, log);
-            }
-        });
-    detail::forEachBucket(list.wallPairs, laws,
-                          [&](auto* nT, auto* dT, auto* tT, std::uint32_t b, std::uint32_t e) {
-                              using N = std::remove_pointer_t<decltype(nT)>;
-                              using D = std::remove_pointer_t<decltype(dT)>;
-                              using T = std::remove_pointer_t<decltype(tT)>;
-                              if constexpr (kAreaForm<N, D, T>)
-                                  detail::areaWalls<N, D, T>(s, walls, list.wallPairs, b, e, laws, drift, dt,
-                                                             trialHistory, stats, wallForce, shapes, log);
-                              else if constexpr (kDepthForm<N, D, T>)
-                                  detail::diskWalls<N, D, T>(s, walls, list.wallPairs, b, e, laws, drift, dt,
-                                                             trialHistory, stats, wallForce, log);
-                          });
+    if (body.particleContacts)
+        detail::forEachBucket(
+            list.pairs, laws, [&](auto* nT, auto* dT, auto* tT, std::uint32_t b, std::uint32_t e) {
+                using N = std::remove_pointer_t<decltype(nT)>;
+                using D = std::remove_pointer_t<decltype(dT)>;
+                using T = std::remove_pointer_t<decltype(tT)>;
+                if constexpr (kAreaForm<N, D, T>) {
+                    detail::areaPairs<N, D, T>(s, list.pairs, b, e, laws, drift, dt, trialHistory, stats,
+                                               shapes, log);
+                } else if constexpr (kDepthForm<N, D, T>) {
+                    if (laws.hasRolling())
+                        detail::diskPairs<N, D, T, true>(s, list.pairs, b, e, laws, drift, dt,
+                                                         body.overlapGuard, trialHistory, stats, log);
+                    else
+                        detail::diskPairs<N, D, T, false>(s, list.pairs, b, e, laws, drift, dt,
+                                                          body.overlapGuard, trialHistory, stats, log);
+                }
+            });
+    if (body.wallContacts)
+        detail::forEachBucket(
+            list.wallPairs, laws, [&](auto* nT, auto* dT, auto* tT, std::uint32_t b, std::uint32_t e) {
+                using N = std::remove_pointer_t<decltype(nT)>;
+                using D = std::remove_pointer_t<decltype(dT)>;
+                using T = std::remove_pointer_t<decltype(tT)>;
+                if constexpr (kAreaForm<N, D, T>)
+                    detail::areaWalls<N, D, T>(s, walls, list.wallPairs, b, e, laws, drift, dt, trialHistory,
+                                               stats, wallForce, shapes, log);
+                else if constexpr (kDepthForm<N, D, T>)
+                    detail::diskWalls<N, D, T>(s, walls, list.wallPairs, b, e, laws, drift, dt, trialHistory,
+                                               stats, wallForce, log);
+            });
 }
 
 }  // namespace granulab::dem

@@ -43,6 +43,9 @@ struct BodyForces {
     Real gammaRotation = 0;  ///< [kg m^2/s] torque = -gammaRotation omega
     const std::vector<PullSpring>* springs = nullptr;
     Real time = 0;  ///< [s] of the evaluation (spring motion)
+    bool weight = true;            ///< apply m g (cfddem #Fg)
+    bool particleContacts = true;  ///< evaluate particle pairs (cfddem #FP)
+    bool wallContacts = true;      ///< evaluate particle-wall pairs (cfddem #FB)
 };
 
 /// Polygon shapes and their orientation at the current force evaluation (gc2d spec section 5.4,

@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "dem/generate.hpp"
 #include "dem/setup.hpp"
+#include "fluid/field_series.hpp"
 #include "model/particle_store.hpp"
 #include "model/scene_def.hpp"
 
@@ -19,6 +20,10 @@ struct PreparedScene {
     TimeStepAdvice advice;
     Real impactSpeed = 0;  ///< [m/s] speed used to analyse nonlinear contacts
     std::vector<std::string> warnings;
+    /// [fluid]: where the flow fields come from (filled by the app from io's field files; no
+    /// loader: the uniform fluid.velocity).
+    fluid::FieldSource fields;
+    std::string fieldsNote;  ///< e.g. "12 files (file times), bilinear on 3721 nodes"
 };
 
 /// Engine memory per disk [bytes], estimate: particle store + Verlet half-step velocities (24 B)

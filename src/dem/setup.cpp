@@ -242,6 +242,11 @@ WorldConfig makeWorldConfig(const model::SceneDef& scene, Real maxRadius) {
     c.broadPhase = broadPhaseOf(scene);
     c.sortEveryRebuilds = static_cast<int>(scene.dem.sortEvery);
     c.overlapGuard = scene.dem.overlapGuard ? 0.01 : 0.0;
+    c.weight = scene.dem.weight;
+    c.particleContacts = scene.dem.particleContacts;
+    c.wallContacts = scene.dem.wallContacts;
+    if (scene.attraction.present)
+        c.attraction = WorldConfig::Attraction{scene.attraction.constant, scene.attraction.cutoff};
     for (const auto& w : scene.dem.damping) {
         DampingWindow d;
         d.gamma = w.gamma;
@@ -254,7 +259,20 @@ WorldConfig makeWorldConfig(const model::SceneDef& scene, Real maxRadius) {
     return c;
 }
 
-World makeWorld(const model::SceneDef& scene, const InitialParticles& initial) {
+FluidForceConfig fluidForceConfig(const model::FluidDef& def) {
+    FluidForceConfig c;
+    c.drag = fluid::makeDragLaw(def.drag, def.cw);
+    c.fluid.density = def.density;
+    c.fluid.viscosity = def.viscosity;
+    c.buoyancy = def.buoyancy;
+    c.pressureGradient = def.pressureGradient;
+    c.pressureToPascal = def.pressure == "kinematic" ? def.density : 1.0;
+    c.depth = def.depth;
+    c.voidageCell = def.voidageCell;
+    return c;
+}
+
+World makeWorld(const model::SceneDef& scene, const InitialParticles& initial, fluid::FieldSource fields) {
     Diagnostics ignored;  // the scene was validated before
     LawTable laws = buildLawTable(scene, ignored);
     const auto names = model::materialNames(scene);
@@ -286,6 +304,10 @@ World makeWorld(const model::SceneDef& scene, const InitialParticles& initial) {
     config.gravitySchedule = buildGravitySchedule(scene);
     config.sizeCycle = buildSizeCycle(scene);
     config.lawChanges = buildLawChanges(scene, scene.dem.dt);
+    if (scene.fluid.present) {
+        if (!fields.load) fields.uniformVelocity = scene.fluid.velocity;
+        config.fluid = WorldConfig::Fluid{std::move(fields), fluidForceConfig(scene.fluid)};
+    }
     for (const auto& def : scene.springs) {  // ids are generation indices, equal to slots at t = 0
         PullSpring sp;
         sp.id = static_cast<ParticleId>(def.particle);

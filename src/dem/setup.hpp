@@ -56,7 +56,12 @@ void adviseFaceTimeStep(const LawTable& laws, const InitialParticles& initial,
 /// Translates the scene's damping windows etc. into the engine configuration.
 WorldConfig makeWorldConfig(const model::SceneDef& scene, Real maxRadius);
 
-/// The world at t = 0 (call initialize() before stepping, or loadState()).
-World makeWorld(const model::SceneDef& scene, const InitialParticles& initial);
+/// The world at t = 0 (call initialize() before stepping, or loadState()). `fields`: where the
+/// flow fields of [fluid] come from (the app builds it from the field files; ignored without
+/// [fluid]; an empty loader means the uniform fluid.velocity).
+World makeWorld(const model::SceneDef& scene, const InitialParticles& initial, fluid::FieldSource fields = {});
+
+/// The fluid-force parameters of [fluid] (cfddem spec 5).
+FluidForceConfig fluidForceConfig(const model::FluidDef& def);
 
 }  // namespace granulab::dem

@@ -48,6 +48,7 @@ World::World(WorldConfig config, model::ParticleStore store, model::WallSet wall
     m_shapes.anyPolygon = m_pool.size() > 0;
     for (const ParticleId id : m_store.id) m_nextId = std::max<ParticleId>(m_nextId, id + 1);
     for (const Real r : m_store.radius) m_maxRadius = std::max(m_maxRadius, r);
+    if (m_config.fluid) m_field = std::make_unique<fluid::FieldSeries>(m_config.fluid->source);
 }
 
 Real World::totalMass() const noexcept {
@@ -140,6 +141,10 @@ void World::evaluateForces(const BodyForces& body, const DriftVelocities& drift,
     }
     computeForces(m_store, m_walls, m_list, m_laws, body, drift, m_config.dt, trial, m_stats, m_wallForce,
                   m_shapes, log);
+    if (m_field)
+        addFluidForces(m_store, *m_field, m_config.fluid->forces, body.gravity, m_fluidStats, m_voidage);
+    if (m_config.attraction)
+        addAttraction(m_store, m_config.attraction->constant, m_config.attraction->cutoff, m_attractionCells);
 }
 
 BodyForces World::bodyForcesAt(std::int64_t step) const noexcept {
@@ -148,6 +153,9 @@ BodyForces World::bodyForcesAt(std::int64_t step) const noexcept {
     b.overlapGuard = m_config.overlapGuard;
     b.springs = m_config.springs.empty() ? nullptr : &m_config.springs;
     b.time = static_cast<Real>(step) * m_config.dt;
+    b.weight = m_config.weight;
+    b.particleContacts = m_config.particleContacts;
+    b.wallContacts = m_config.wallContacts;
     for (const auto& w : m_config.damping)
         if (step >= w.fromStep && step < w.toStep) {
             b.gamma += w.gamma;
@@ -179,6 +187,7 @@ void World::initialize() {
     m_walls.place(time());
     if (m_config.sizeCycle) applySizeScale(time());
     rebuildNeighbors();
+    if (m_field) m_field->update(time());
     // Set-up evaluation: nothing has moved yet, so no tangential displacement (drift = none).
     evaluateForces(bodyForcesAt(m_step), DriftVelocities{}, false);
 }
@@ -197,6 +206,14 @@ std::uint32_t World::step() {
         m_walls.advance(time(), dt, m_wallForce);
         if (m_config.sizeCycle) applySizeScale(time());
         if (m_lawChangesDone < m_config.lawChanges.size()) applyLawChanges();
+        if (m_field) {
+            try {  // the field of the new time (a file read when the next one is due)
+                m_field->update(time());
+            } catch (const std::exception& e) {
+                m_fieldError = e.what();
+                return status | kStepFieldFailed;
+            }
+        }
     }
     if (!std::isfinite(maxSpeed)) status |= kStepNonFinite;
     // A particle, or a wall sweeping through particles, moving half a radius in one step tunnels.
@@ -239,7 +256,7 @@ std::uint32_t World::step() {
 Energies World::energies() const noexcept {
     Energies e;
     const auto& s = m_store;
-    const Vec2 g = gravityAt(time());
+    const Vec2 g = m_config.weight ? gravityAt(time()) : Vec2{};
     for (std::size_t i = 0; i < s.size(); ++i) {
         e.kinetic += 0.5 * s.mass[i] * (s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i]);
         const Real inertia = s.invInertia[i] > 0 ? 1.0 / s.invInertia[i] : 0.0;
@@ -258,9 +275,9 @@ Vec2 World::momentum() const noexcept {
 }
 
 std::size_t World::memoryBytes() const noexcept {
-    return m_store.size() * model::ParticleStore::kBytesPerParticle + m_list.memoryBytes() +
-           m_broad->memoryBytes() + m_integrator->memoryBytes() + m_pool.memoryBytes() +
-           m_shapes.world.capacity() * sizeof(Vec2) + m_shapes.first.capacity() * 4;
+    return m_store.size() * model::ParticleStore::kBytesPerParticle + (m_field ? m_field->memoryBytes() : 0) +
+           m_list.memoryBytes() + m_broad->memoryBytes() + m_integrator->memoryBytes() +
+           m_pool.memoryBytes() + m_shapes.world.capacity() * sizeof(Vec2) + m_shapes.first.capacity() * 4;
 }
 
 namespace {

@@ -16,6 +16,7 @@
 
 #include "core/timer.hpp"
 #include "dem/broad_phase.hpp"
+#include "dem/fluid_forces.hpp"
 #include "dem/forces.hpp"
 #include "dem/integrator.hpp"
 #include "dem/law_table.hpp"
@@ -55,6 +56,21 @@ struct WorldConfig {
         LawTable laws;
     };
     std::vector<LawChange> lawChanges;  ///< ascending steps
+    bool weight = true;                 ///< m g on every particle (cfddem #Fg)
+    bool particleContacts = true;       ///< particle-particle contacts (cfddem #FP)
+    bool wallContacts = true;           ///< particle-wall contacts (cfddem #FB)
+    /// One-way coupling to a flow field (cfddem spec 5); absent: no fluid.
+    struct Fluid {
+        fluid::FieldSource source;
+        FluidForceConfig forces;
+    };
+    std::optional<Fluid> fluid;
+    /// Mutual attraction (cfddem spec 5.6); absent: off.
+    struct Attraction {
+        Real constant = 0;  ///< [m^3/(kg s^2)] G
+        Real cutoff = 0;    ///< [m] 0: all pairs
+    };
+    std::optional<Attraction> attraction;
 };
 
 /// Bit flags returned by World::step (STYLE.md: step() never throws).
@@ -63,6 +79,7 @@ enum StepStatus : std::uint32_t {
     kStepNonFinite = 1u << 0,    ///< NaN or infinity in the particle state
     kStepTunnelling = 1u << 1,   ///< a particle moved more than half its radius in one step
     kStepDeepOverlap = 1u << 2,  ///< an overlap reached the smaller radius
+    kStepFieldFailed = 1u << 3,  ///< a flow field could not be loaded (World::fieldError())
 };
 
 struct Energies {
@@ -78,7 +95,8 @@ public:
     World(WorldConfig config, model::ParticleStore store, model::WallSet walls, LawTable laws,
           model::ShapePool shapes = {});
 
-    /// First neighbour build and force evaluation (skipped after loadState).
+    /// First neighbour build and force evaluation (skipped after loadState). Throws
+    /// std::runtime_error when the flow field of t cannot be loaded.
     void initialize();
     /// Advances one step; returns StepStatus flags.
     std::uint32_t step();
@@ -113,6 +131,12 @@ public:
     const StageTimers<Stage>& timers() const noexcept { return m_timers; }
     const char* broadPhaseName() const noexcept { return m_broad->name(); }
     const char* integratorName() const noexcept { return m_integrator->name(); }
+    /// The flow field series (nullptr without [fluid]) and the fluid forces' statistics of the
+    /// last evaluation.
+    const fluid::FieldSeries* field() const noexcept { return m_field.get(); }
+    const FluidStats& fluidStats() const noexcept { return m_fluidStats; }
+    /// Why the last step returned kStepFieldFailed.
+    const std::string& fieldError() const noexcept { return m_fieldError; }
     /// Force evaluations since t = 0 (more than the steps for an iterating predictor-corrector).
     std::uint64_t forceEvaluations() const noexcept { return m_forceEvaluations; }
 
@@ -165,6 +189,11 @@ private:
     LawTable m_baseLaws;               ///< the laws of t = 0
     Real m_scale = 1;                  ///< global size scale s of the radius column and corners
     Real m_scaleAtRebuild = 1;         ///< s at the last neighbour rebuild
+    std::unique_ptr<fluid::FieldSeries> m_field;
+    FluidStats m_fluidStats;
+    VoidageScratch m_voidage;
+    std::vector<std::uint32_t> m_attractionCells;
+    std::string m_fieldError;
 };
 
 }  // namespace granulab::dem

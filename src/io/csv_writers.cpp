@@ -87,7 +87,8 @@ void SeriesWriter::flush() {
 }
 
 void writeFinalCsv(const std::string& path, const model::ParticleStore& s, const model::ShapePool& shapes,
-                   const std::vector<std::string>& materialNames, model::MassModel massModel) {
+                   const std::vector<std::string>& materialNames, model::MassModel massModel,
+                   const std::vector<FinalExtraColumn>& extra) {
     std::vector<std::size_t> order(s.size());
     std::iota(order.begin(), order.end(), 0);
     std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return s.id[a] < s.id[b]; });
@@ -99,7 +100,14 @@ void writeFinalCsv(const std::string& path, const model::ParticleStore& s, const
                 throw std::invalid_argument(
                     fmt::format("{}: particle {} refers to shape {}, the pool holds {}", path, s.id[i],
                                 s.shape[i], shapes.size()));
-    FinalCsvWriter out(path, {2, true, {"mass", "material", "corners"}});
+    FinalCsvLayout layout{2, true, {"mass", "material", "corners"}};
+    for (const auto& c : extra) {
+        if (c.values.size() != s.size())
+            throw std::invalid_argument(fmt::format("{}: column {} has {} values for {} particles", path,
+                                                    c.name, c.values.size(), s.size()));
+        layout.extras.push_back(c.name);
+    }
+    FinalCsvWriter out(path, layout);
     for (const std::size_t i : order) {
         const bool polygon = hasShapes && s.shape[i] != model::kDiskShape;
         FinalCsvParticle p;
@@ -117,6 +125,7 @@ void writeFinalCsv(const std::string& path, const model::ParticleStore& s, const
         out.extra(
             std::string_view(s.material[i] < materialNames.size() ? materialNames[s.material[i]] : "?"));
         out.extra(std::uint64_t{polygon ? shapes.count[s.shape[i]] : 0u});
+        for (const auto& c : extra) out.extra(c.values[i]);
         out.endRow();
     }
     out.commit();

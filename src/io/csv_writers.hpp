@@ -40,7 +40,14 @@ private:
 /// `polygon` for particles whose shape is in `shapes`; corners is the polygon's corner count, 0
 /// for round particles. New columns go at the end, so readers of older files keep working.
 /// A shape index outside `shapes` throws std::invalid_argument.
+/// `extra`: further columns (name, one value per slot), appended after corners (e.g. the fluid
+/// velocity at each particle of a [fluid] run).
+struct FinalExtraColumn {
+    std::string name;
+    std::vector<Real> values;  ///< by slot
+};
 void writeFinalCsv(const std::string& path, const model::ParticleStore& s, const model::ShapePool& shapes,
-                   const std::vector<std::string>& materialNames, model::MassModel massModel);
+                   const std::vector<std::string>& materialNames, model::MassModel massModel,
+                   const std::vector<FinalExtraColumn>& extra = {});
 
 }  // namespace granulab::io

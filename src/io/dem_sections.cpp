@@ -12,6 +12,7 @@
 
 #include "core/suggest.hpp"
 #include "io/dem_machine_sections.hpp"
+#include "io/fluid_sections.hpp"
 #include "io/toml_table_reader.hpp"
 
 namespace granulab::io {
@@ -34,6 +35,9 @@ void readDem(TableReader& r, model::DemDef& dem) {
     r.integer("sort_every", dem.sortEvery);
     r.boolean("overlap_guard", dem.overlapGuard);
     r.vec2("gravity", dem.gravity);
+    r.boolean("weight", dem.weight);
+    r.boolean("particle_contacts", dem.particleContacts);
+    r.boolean("wall_contacts", dem.wallContacts);
     forEachTable(r, "damping", [&](TableReader& d, std::size_t) {
         model::DampingWindowDef w;
         w.loc = d.loc();
@@ -408,6 +412,7 @@ void readDemSections(TableReader& root, model::SceneDef& scene) {
         scene.springs.push_back(sp);
     });
     readMachineSections(root, scene);
+    readFluidSections(root, scene);
 }
 
 }  // namespace
@@ -415,9 +420,9 @@ void readDemSections(TableReader& root, model::SceneDef& scene) {
 SceneSections demSceneSections() {
     SceneSections s;
     s.engine = "dem";
-    s.sections = {"dem",    "material", "contact", "shape",        "particle", "block",
-                  "heap",   "wall",     "spring",  "drum",         "source",   "inlet",
-                  "outlet", "boundary", "gravity", "size_scaling", "change"};
+    s.sections = {"dem",     "material",     "contact", "shape",  "particle",  "block",  "heap",
+                  "wall",    "spring",       "drum",    "source", "inlet",     "outlet", "boundary",
+                  "gravity", "size_scaling", "change",  "fluid",  "attraction"};
     s.required = "dem";
     s.requiredHint = "needs at least dt";
     s.needsEndTime = true;

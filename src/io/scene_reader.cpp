@@ -64,6 +64,7 @@ void readOutput(TableReader& r, model::OutputDef& o) {
     r.number("checkpoint_interval", o.checkpointInterval);
     r.boolean("vtk", o.vtk);
     r.boolean("contacts", o.contacts);
+    r.boolean("particle_series", o.particleSeries);
     r.strings("analyses", o.analyses);
 }
 

@@ -16,6 +16,7 @@
 #include "geom/segment.hpp"
 #include "io/range_checks.hpp"
 #include "io/shape_checks.hpp"
+#include "io/validate_fluid.hpp"
 #include "io/validate_machines.hpp"
 #include "model/gc2d_generators.hpp"
 #include "model/material_names.hpp"
@@ -384,6 +385,7 @@ void checkDemDef(const model::SceneDef& scene, Diagnostics& diags, std::vector<s
     checkMachineDefs(scene, diags, model::materialNames(scene));
     checkGc2dGenerators(scene, checker, model::materialNames(scene));
     checkShapes(scene, diags, warnings);
+    checkFluidDef(scene, diags);
 }
 
 }  // namespace granulab::io

@@ -36,9 +36,12 @@ struct DemDef {
     Real skin = -1;                   ///< [m] neighbour-list skin; <0: 0.2 * largest radius
     std::string massModel =
         "disk";  ///< "disk": m = rho pi r^2, I = m r^2/2; "sphere": m = 4/3 rho pi r^3, I = 2/5 m r^2
-    std::int64_t sortEvery = 16;  ///< re-sort slots spatially every k-th rebuild (0: never)
-    bool overlapGuard = false;    ///< skip pair contacts deeper than 1 % of the smaller radius (cfddem seed)
-    Vec2 gravity{0, 0};           ///< [m/s^2]
+    std::int64_t sortEvery = 16;   ///< re-sort slots spatially every k-th rebuild (0: never)
+    bool overlapGuard = false;     ///< skip pair contacts deeper than 1 % of the smaller radius (cfddem seed)
+    Vec2 gravity{0, 0};            ///< [m/s^2]
+    bool weight = true;            ///< m g on every particle (cfddem #Fg); off: g still sets buoyancy
+    bool particleContacts = true;  ///< particle-particle contact forces (cfddem #FP)
+    bool wallContacts = true;      ///< particle-wall contact forces (cfddem #FB)
     std::vector<DampingWindowDef> damping;
     SourceLoc loc;
 };

@@ -12,6 +12,7 @@
 #include "core/types.hpp"
 #include "model/dem_def.hpp"
 #include "model/edmd_def.hpp"
+#include "model/fluid_def.hpp"
 #include "model/machine_def.hpp"
 
 namespace granulab::model {
@@ -35,6 +36,9 @@ struct OutputDef {
     bool contacts = true;
     /// DEM: analyses run at every snapshot (the names of `granulab analyze`, analysis/dem_analyses.hpp)
     std::vector<std::string> analyses;
+    /// DEM: the cfddem seed's nine per-particle series CSV/r_x.csv ... alpha.csv (spec 6.6) at every
+    /// series.csv row
+    bool particleSeries = false;
     SourceLoc loc;
 };
 
@@ -52,7 +56,9 @@ struct SceneDef {
     std::vector<HeapDef> heaps;  ///< generated after the blocks (ids follow theirs)
     std::vector<WallDef> walls;
     std::vector<SpringDef> springs;
-    MachineDefs machines;  ///< drums, sources, inlets, outlets, boundaries, gravity schedule, changes
+    MachineDefs machines;      ///< drums, sources, inlets, outlets, boundaries, gravity schedule, changes
+    FluidDef fluid;            ///< [fluid]: imported flow field, drag, buoyancy (cfddem spec 5)
+    AttractionDef attraction;  ///< [attraction]: mutual Newtonian attraction (cfddem spec 5.6)
     OutputDef output;
     EdmdDef edmd;
 };

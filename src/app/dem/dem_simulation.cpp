@@ -11,6 +11,8 @@
 
 #include "app/dem/dem_contacts.hpp"
 #include "app/dem/dem_engine.hpp"
+#include "app/dem/dem_fluid.hpp"
+#include "app/dem/particle_series.hpp"
 #include "app/simulation_options.hpp"
 #include "core/interrupt.hpp"
 #include "core/version.hpp"
@@ -36,7 +38,8 @@ public:
         : m_scene(scene),
           m_options(options),
           m_warnings(std::move(prepared.warnings)),
-          m_world(dem::makeWorld(scene, prepared.initial)),
+          m_fieldsNote(prepared.fieldsNote),
+          m_world(dem::makeWorld(scene, prepared.initial, std::move(prepared.fields))),
           m_dt(scene.dem.dt),
           m_endStep(dem::stepsIn(scene.run.endTime, scene.dem.dt)),
           m_initialParticles(m_world.store().size()) {}
@@ -80,7 +83,12 @@ public:
 
     std::uint32_t start() override {
         m_world.recordContacts(wantsContacts());  // the t = 0 snapshot's contacts
-        m_world.initialize();
+        try {
+            m_world.initialize();
+        } catch (const std::exception& e) {  // the flow field of t = 0 could not be loaded
+            m_inputError = e.what();
+            return kSimInputFailed;
+        }
         m_world.recordContacts(false);
         return kSimOk;
     }
@@ -100,6 +108,10 @@ public:
             if (interruptRequested()) return kSimInterrupted;  // between whole steps
             if (wantsContacts()) m_world.recordContacts(endsAtSnapshot(m_world.stepIndex() + 1));
             const std::uint32_t status = m_world.step();
+            if (status & dem::kStepFieldFailed) {
+                m_inputError = m_world.fieldError();
+                return kSimInputFailed;
+            }
             if (status != dem::kStepOk)
                 return (status & dem::kStepNonFinite ? kSimNonFinite : 0u) |
                        (status & dem::kStepTunnelling ? kSimUnstable : 0u) |
@@ -127,6 +139,11 @@ public:
                 "the run made no progress at t = {:.6g} s (step {}): the output stops no longer advance the "
                 "clock (an internal error; please report it with the scene).",
                 m_world.time(), m_world.stepIndex());
+        if (status & kSimInputFailed)
+            return fmt::format(
+                "a flow field could not be loaded at t = {:.6g} s (step {}): {}. The files were read "
+                "at the start of the run; was one changed or removed since?",
+                m_world.time(), m_world.stepIndex(), m_inputError);
         std::vector<std::string> why;
         if (status & kSimNonFinite) why.push_back("a particle position or velocity became NaN/infinite");
         if (status & kSimUnstable)
@@ -149,6 +166,11 @@ public:
             s += "time step too large for the contact stiffness (see `granulab info` for the advised dt), "
                  "or particles created overlapping";
         return s + ".";
+    }
+
+    void openOutputs(const std::string& dir, double resumeTime) override {
+        if (m_scene.output.particleSeries)
+            m_particleSeries = std::make_unique<ParticleSeries>(dir, resumeTime);
     }
 
     std::vector<std::string> seriesColumns() const override {
@@ -179,6 +201,7 @@ public:
                 c.push_back("outlet_" + o.name + "_mass");
             }
         }
+        for (auto& k : fluidSeriesColumns(m_scene)) c.push_back(std::move(k));
         return c;
     }
 
@@ -222,11 +245,14 @@ public:
                 row.push_back(fc.outletMass[o]);
             }
         }
+        appendFluidSeriesRow(m_scene, m_world, row);
+        if (m_particleSeries) m_particleSeries->write(m_world.time(), m_world.store());
         m_lastEnergy = e;
         return row;
     }
 
     void snapshot(const std::string& dir, int index, io::PvdWriter& pvd) override {
+        if (m_particleSeries) m_particleSeries->flush();
         if (!m_scene.output.vtk) return;
         io::writeSnapshot(dir, index, m_world.store(), m_world.shapes(), m_world.walls(), m_world.time(),
                           pvd);
@@ -239,7 +265,8 @@ public:
 
     void writeFinal(const std::string& dir) override {
         io::writeFinalCsv(dir + "/final.csv", m_world.store(), m_world.shapes(),
-                          model::materialNames(m_scene), model::massModelOf(m_scene.dem.massModel));
+                          model::materialNames(m_scene), model::massModelOf(m_scene.dem.massModel),
+                          fluidFinalColumns(m_world));
     }
 
     nlohmann::json summaryKeys(const RunReport& report) const override {
@@ -324,6 +351,7 @@ public:
             flow["outlets"] = outlets;
             js["flow"] = flow;
         }
+        if (m_scene.fluid.present) js["fluid"] = fluidSummary(m_scene, m_world, m_fieldsNote);
         if (report.benchmarkSeconds >= 0) {
             const double bw = report.benchmarkSeconds;
             js["benchmark"] = {
@@ -337,9 +365,11 @@ public:
 
     std::string banner(const std::string& dir) const override {
         return fmt::format(
-            "granulab {}: {} particles, {} wall segments, dt = {:.4g} s, {} steps to t = {:.6g} s -> {}",
-            kVersion, m_world.store().size(), m_world.walls().segments.size(), m_dt,
-            m_endStep - m_world.stepIndex(), m_scene.run.endTime, dir);
+                   "granulab {}: {} particles, {} wall segments, dt = {:.4g} s, {} steps to t = {:.6g} s -> "
+                   "{}",
+                   kVersion, m_world.store().size(), m_world.walls().segments.size(), m_dt,
+                   m_endStep - m_world.stepIndex(), m_scene.run.endTime, dir) +
+               (m_fieldsNote.empty() ? "" : "\nfluid: " + m_fieldsNote);
     }
 
     void printDone(const std::string& dir, const RunReport& report) const override {
@@ -408,6 +438,9 @@ private:
     const model::SceneDef& m_scene;
     SimulationOptions m_options;
     std::vector<std::string> m_warnings;
+    std::string m_fieldsNote;  ///< [fluid]: what the fields are (banner, summary)
+    std::string m_inputError;  ///< why a flow field could not be loaded (kSimInputFailed)
+    std::unique_ptr<ParticleSeries> m_particleSeries;  ///< output.particle_series (cfddem 6.6)
     dem::World m_world;
     Real m_dt;
     std::int64_t m_endStep;
@@ -425,7 +458,12 @@ dem::PreparedScene checkAndPrepareDem(const model::SceneDef& scene) {
     Diagnostics diags;
     std::vector<std::string> warnings;
     io::checkDemDef(scene, diags, warnings);
+    // The field files are opened (and each read once) only for a scene whose [fluid] keys are right.
+    io::OpenedFields fields;
+    if (scene.fluid.present && diags.empty()) fields = io::openFlowFields(scene, diags);
     dem::PreparedScene prepared = dem::prepareScene(scene, diags);
+    prepareDemFluid(scene, std::move(fields), prepared, diags);
+    diags.throwIfAny();
     warnings.insert(warnings.end(), prepared.warnings.begin(), prepared.warnings.end());
     prepared.warnings = std::move(warnings);
     return prepared;

@@ -1,0 +1,152 @@
+#!/usr/bin/env bash
+# Particles in a 2D channel flow around a square obstacle: OpenFOAM computes the air flow
+# (2 m x 0.5 m channel, 0.1 m square obstacle, inlet 2 m/s, laminar Re = 40), granulab blows
+# small droplets through it (schiller_naumann drag, particles from an inlet on the left edge).
+#
+#   examples/channel/run.sh [--cells N] [--out DIR] [--cfd-only] [-- GRANULAB_ARGS]
+#
+#   --cells N     cells along the obstacle's side (default 8: 20N x 5N - N^2 = 6336 cells;
+#                 4 for a quick test)
+#   --out DIR     output folder (default out/channel under the repository root)
+#   --cfd-only    stop after OpenFOAM (blockMesh, icoFoam, foamToVTK)
+#   -- ARGS       further arguments for `granulab run`, e.g. -- --set inlet[0].rate=100
+#
+# Steps: (a) source the OpenFOAM environment (Debian package "openfoam", OpenFOAM v1912);
+# (b) copy case/ to DIR/case and set the resolution and time step; (c) blockMesh, icoFoam,
+# foamToVTK there (logs DIR/case/log.*); (d) granulab run particles.toml with the VTK series
+# (DIR/granulab). Timings go to DIR/timings.txt.
+set -euo pipefail
+
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+root=$(cd "$here/../.." && pwd)
+
+die() { echo "run.sh: error: $*" >&2; exit 1; }
+usage() { sed -n '2,17p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
+
+cells=8
+out=""
+cfd_only=0
+extra=()
+while [ $# -gt 0 ]; do
+    case "$1" in
+        --cells) [ $# -ge 2 ] || die "--cells needs a value"; cells=$2; shift 2 ;;
+        --cells=*) cells=${1#*=}; shift ;;
+        --out) [ $# -ge 2 ] || die "--out needs a value"; out=$2; shift 2 ;;
+        --out=*) out=${1#*=}; shift ;;
+        --cfd-only) cfd_only=1; shift ;;
+        -h|--help) usage; exit 0 ;;
+        --) shift; extra=("$@"); break ;;
+        *) usage >&2; die "unknown argument '$1'" ;;
+    esac
+done
+if ! { [[ "$cells" =~ ^[0-9]+$ ]] && [ "$cells" -ge 2 ] && [ "$cells" -le 100 ]; }; then
+    die "--cells must be a whole number in [2, 100], got '$cells'"
+fi
+if [ -z "$out" ]; then out="$root/out/channel"; fi
+out=$(realpath -m -- "$out")
+
+# Time step: the largest of a list of values that divide the write interval (0.05 s) exactly,
+# with dt <= 0.5 dx/4.5 m/s (OpenFOAM's Courant number adds |Ux|/dx and |Uy|/dy; the fastest
+# air beside the obstacle is 3.4 m/s). N = 8: 0.00125 s, N = 4: 0.0025 s.
+dt=$(awk -v n="$cells" 'BEGIN { lim = 0.5 * (0.1 / n) / 4.5;
+    split("0.025 0.0125 0.01 0.005 0.0025 0.002 0.00125 0.001 0.0005 0.00025 0.0002 0.000125 0.0001 0.00005", c, " ");
+    for (i = 1; i in c; i++) if (c[i] + 0 <= lim) { print c[i]; exit } print 0.00005 }')
+
+# (a) OpenFOAM environment. An environment the user sourced already is kept.
+if ! { [ -n "${WM_PROJECT_DIR:-}" ] && command -v icoFoam >/dev/null 2>&1; }; then
+    if [ -f /usr/share/openfoam/etc/bashrc ]; then
+        export WM_PROJECT_DIR=/usr/share/openfoam
+        # Debian's bashrc complains about missing helper scripts (bin/foamEtcFile); harmless.
+        set +eu
+        # shellcheck disable=SC1091
+        . /usr/share/openfoam/etc/bashrc >/dev/null 2>&1
+        set -eu
+    fi
+fi
+for tool in blockMesh icoFoam foamToVTK; do
+    command -v "$tool" >/dev/null 2>&1 ||
+        die "OpenFOAM's $tool was not found: install the Debian package openfoam (sudo apt-get install openfoam), or source your OpenFOAM's etc/bashrc first"
+done
+[ -n "${WM_PROJECT_DIR:-}" ] || die "WM_PROJECT_DIR is not set: install the Debian package openfoam, or source your OpenFOAM's etc/bashrc first"
+
+# (b) a fresh copy of the case
+case_dir="$out/case"
+mkdir -p "$out"
+rm -rf "$case_dir"
+cp -r "$here/case" "$case_dir"
+rm -rf "$case_dir"/[1-9]* "$case_dir"/0.[0-9]* "$case_dir/constant/polyMesh" "$case_dir/VTK" \
+    "$case_dir/postProcessing" "$case_dir"/log.*   # leftovers of a run inside examples/
+cat > "$case_dir/system/caseParameters" <<EOF
+/*--------------------------------*- C++ -*----------------------------------*\\
+  written by examples/channel/run.sh --cells $cells
+\\*---------------------------------------------------------------------------*/
+FoamFile
+{
+    version     2.0;
+    format      ascii;
+    class       dictionary;
+    location    "system";
+    object      caseParameters;
+}
+
+n           $cells;     // cells along the obstacle's side D = 0.1 m
+deltaT      $dt;     // [s] Courant number <= 0.5; divides writeInterval 0.05 s
+nx0         $((4 * cells));     // 4n: cells in x over [0, 0.4]
+nx2         $((15 * cells));     // 15n: cells in x over [0.5, 2]
+ny0         $((2 * cells));     // 2n: cells in y over [0, 0.2] and over [0.3, 0.5]
+
+// ************************************************************************* //
+EOF
+
+now() { date +%s.%N; }
+timings="$out/timings.txt"
+echo "# step seconds (cells per obstacle side = $cells, deltaT = $dt s)" > "$timings"
+step() {  # step NAME COMMAND...: run in the case folder, log to log.NAME, time it
+    local name=$1; shift
+    local t0 t1
+    t0=$(now)
+    if ! (cd "$case_dir" && "$@") > "$case_dir/log.$name" 2>&1; then
+        echo "run.sh: error: $name failed; the end of $case_dir/log.$name:" >&2
+        tail -n 20 "$case_dir/log.$name" >&2
+        exit 1
+    fi
+    t1=$(now)
+    local s
+    s=$(awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.2f", b - a }')
+    echo "$name $s" >> "$timings"
+    echo "  $name: $s s (log: $case_dir/log.$name)"
+}
+
+# (c) mesh, flow, conversion to VTK
+ncells=$((20 * cells * 5 * cells - cells * cells))
+echo "OpenFOAM ($(command -v icoFoam)), $ncells cells ($cells per obstacle side), deltaT = $dt s, into $case_dir"
+step blockMesh blockMesh
+step icoFoam icoFoam
+step foamToVTK foamToVTK
+vtk="$case_dir/VTK"
+series=$(find "$vtk" -maxdepth 1 -name '*.series' | head -n 1)
+[ -n "$series" ] || die "foamToVTK wrote no .series index into $vtk"
+echo "  VTK series: $series ($(find "$vtk" -maxdepth 1 -name '*.vtm' | wc -l) time steps)"
+probe="$case_dir/postProcessing/wake/0/U"
+if [ -f "$probe" ]; then
+    awk '!/^#/ { t = $1; ux = $2; uy = $3 } END { gsub(/[()]/, "", ux);
+        printf "  wake (0.8, 0.25) m: Ux = %.4f m/s, Uy = %.4f m/s at t = %s s\n", ux, uy, t }' "$probe"
+fi
+if [ "$cfd_only" = 1 ]; then
+    echo "done (--cfd-only); timings in $timings"
+    exit 0
+fi
+
+# (d) the particles in the flow
+cd "$root"
+[ -x build/granulab ] || die "build/granulab not found: build granulab first (scripts/setup.sh)"
+echo "granulab: examples/channel/particles.toml into $out/granulab"
+t0=$(now)
+if ! build/granulab run examples/channel/particles.toml --set "fluid.fields=[\"$vtk\"]" \
+        --out "$out/granulab" --overwrite ${extra[@]+"${extra[@]}"}; then
+    die "granulab run failed (does this build know the [fluid] section?)"
+fi
+t1=$(now)
+echo "granulab $(awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.2f", b - a }')" >> "$timings"
+echo "done: $out/granulab (view: paraview $out/granulab/snapshots.pvd, with $series for the air);"
+echo "      timings in $timings"

@@ -1,0 +1,165 @@
+// SPDX-License-Identifier: MIT
+// Fluid forces and mutual attraction (dem/fluid_forces.hpp; cfddem spec 5.2-5.7).
+#include "dem/fluid_forces.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <type_traits>
+
+namespace granulab::dem {
+
+namespace {
+
+constexpr Real kMinVoidage = 0.1;  ///< floor of the voidage (Di Felice's factor diverges at 0)
+
+/// Voidage at each particle from the particle volume per square cell of edge h in a slab of
+/// thickness `depth`: eps = 1 - V_solid / (h^2 depth), at least kMinVoidage.
+void voidages(const model::ParticleStore& s, Real h, Real depth, VoidageScratch& scratch,
+              std::vector<Real>& out) noexcept {
+    const std::size_t n = s.size();
+    Real x0 = s.x[0], y0 = s.y[0], x1 = x0, y1 = y0;
+    for (std::size_t i = 1; i < n; ++i) {
+        x0 = std::min(x0, s.x[i]);
+        x1 = std::max(x1, s.x[i]);
+        y0 = std::min(y0, s.y[i]);
+        y1 = std::max(y1, s.y[i]);
+    }
+    const auto nx = static_cast<std::size_t>((x1 - x0) / h) + 1,
+               ny = static_cast<std::size_t>((y1 - y0) / h) + 1;
+    const auto cellOf = [&](std::size_t i) {
+        return static_cast<std::size_t>((s.x[i] - x0) / h) + nx * static_cast<std::size_t>((s.y[i] - y0) / h);
+    };
+    scratch.solid.assign(nx * ny, 0.0);
+    for (std::size_t i = 0; i < n; ++i)
+        scratch.solid[cellOf(i)] += 4.0 / 3.0 * kPi * s.radius[i] * s.radius[i] * s.radius[i];
+    const Real cellVolume = h * h * depth;
+    for (std::size_t i = 0; i < n; ++i)
+        out[i] = std::max(kMinVoidage, 1 - scratch.solid[cellOf(i)] / cellVolume);
+}
+
+template <class Drag, class Method>
+void fluidLoop(model::ParticleStore& s, const Drag& drag, const Method& method,
+               const fluid::FieldSeries& field, const FluidForceConfig& c, Vec2 g,
+               const std::vector<Real>* voidage, FluidStats& stats) noexcept {
+    const fluid::FieldInterpolator* second = field.second();
+    const Real w = field.weight();
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        const Vec2 pos{s.x[i], s.y[i]};
+        fluid::FluidSample f;
+        method.sample(pos, f);
+        if (second) {
+            const fluid::FluidSample f2 = second->sample(pos);
+            f.u = f.u * (1 - w) + f2.u * w;
+            f.inside = f.inside && f2.inside;
+        }
+        if (!f.inside) ++stats.outside;
+        const Real r = s.radius[i];
+        const Real volume = 4.0 / 3.0 * kPi * r * r * r;  // [m^3] sphere
+        const Vec2 vr = Vec2{s.vx[i], s.vy[i]} - f.u;     // relative velocity (cfddem 5.3 [I])
+        const Real eps = voidage ? (*voidage)[i] : 1.0;
+        Vec2 force = drag.force(vr, r, c.fluid, eps);
+        stats.drag += force;
+        if constexpr (!std::is_same_v<Drag, fluid::NoDrag>)
+            stats.maxReynolds = std::max(stats.maxReynolds, fluid::reynolds(c.fluid, norm(vr) * eps, r));
+        if (c.buoyancy) force -= g * (c.fluid.density * volume);  // cfddem Eq. 3.63
+        if (c.pressureGradient) force -= field.pressureGradient(pos) * (volume * c.pressureToPascal);
+        s.fx[i] += force.x;
+        s.fy[i] += force.y;
+    }
+}
+
+}  // namespace
+
+void addFluidForces(model::ParticleStore& s, const fluid::FieldSeries& field, const FluidForceConfig& c,
+                    Vec2 g, FluidStats& stats, VoidageScratch& scratch) noexcept {
+    stats = FluidStats{};
+    if (s.size() == 0) return;
+    std::vector<Real>& eps = scratch.eps;
+    const std::vector<Real>* voidage = nullptr;
+    if (fluid::needsVoidage(c.drag)) {
+        Real rmax = 0;
+        for (const Real r : s.radius) rmax = std::max(rmax, r);
+        const Real depth = c.depth > 0 ? c.depth : 2 * rmax;
+        const Real h = c.voidageCell > 0 ? c.voidageCell : std::max(field.first().spacing(), 2 * rmax);
+        eps.resize(s.size());
+        voidages(s, h, depth, scratch, eps);
+        voidage = &eps;
+        stats.minVoidage = *std::min_element(eps.begin(), eps.end());
+    }
+    std::visit(
+        [&](const auto& drag) {
+            field.first().visit(
+                [&](const auto& method) { fluidLoop(s, drag, method, field, c, g, voidage, stats); });
+        },
+        c.drag);
+}
+
+void addAttraction(model::ParticleStore& s, Real constant, Real cutoff,
+                   std::vector<std::uint32_t>& cells) noexcept {
+    const std::size_t n = s.size();
+    const auto pair = [&](std::size_t i, std::size_t j) {
+        const Real dx = s.x[j] - s.x[i], dy = s.y[j] - s.y[i];
+        const Real d2 = dx * dx + dy * dy;
+        if (d2 == 0 || (cutoff > 0 && d2 > cutoff * cutoff)) return;
+        const Real d = std::sqrt(d2);
+        const Real f = constant * s.mass[i] * s.mass[j] / d2;  // cfddem Eq. 3.72, attractive
+        const Real fx = f * dx / d, fy = f * dy / d;
+        s.fx[i] += fx;
+        s.fy[i] += fy;
+        s.fx[j] -= fx;
+        s.fy[j] -= fy;
+    };
+    if (cutoff <= 0) {
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t j = i + 1; j < n; ++j) pair(i, j);
+        return;
+    }
+    if (n < 2) return;
+    // Cell grid of edge `cutoff`: pairs in the same and the 4 forward neighbour cells.
+    Real x0 = s.x[0], y0 = s.y[0], x1 = x0, y1 = y0;
+    for (std::size_t i = 1; i < n; ++i) {
+        x0 = std::min(x0, s.x[i]);
+        x1 = std::max(x1, s.x[i]);
+        y0 = std::min(y0, s.y[i]);
+        y1 = std::max(y1, s.y[i]);
+    }
+    const auto nx = static_cast<std::int64_t>((x1 - x0) / cutoff) + 1;
+    const auto ny = static_cast<std::int64_t>((y1 - y0) / cutoff) + 1;
+    // A sparse layout would be needed for particles spread over many cutoffs; cap the grid and fall
+    // back to all pairs (still correct) when it would be huge.
+    if (nx * ny > static_cast<std::int64_t>(16 * n + 1024)) {
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t j = i + 1; j < n; ++j) pair(i, j);
+        return;
+    }
+    const auto cellOf = [&](std::size_t i) {
+        return static_cast<std::int64_t>((s.x[i] - x0) / cutoff) +
+               nx * static_cast<std::int64_t>((s.y[i] - y0) / cutoff);
+    };
+    const std::size_t ncell = static_cast<std::size_t>(nx * ny);
+    cells.assign(2 * ncell + 1 + n, 0);  // offsets [0, ncell], particles by cell, fill pointers
+    std::uint32_t* start = cells.data();
+    std::uint32_t* members = start + ncell + 1;
+    std::uint32_t* fill = members + n;
+    for (std::size_t i = 0; i < n; ++i) ++start[cellOf(i) + 1];
+    for (std::size_t c = 0; c < ncell; ++c) start[c + 1] += start[c];
+    std::copy(start, start + ncell, fill);
+    for (std::size_t i = 0; i < n; ++i)
+        members[fill[static_cast<std::size_t>(cellOf(i))]++] = static_cast<std::uint32_t>(i);
+    const std::int64_t offsets[4][2] = {{1, 0}, {-1, 1}, {0, 1}, {1, 1}};
+    for (std::int64_t cy = 0; cy < ny; ++cy)
+        for (std::int64_t cx = 0; cx < nx; ++cx) {
+            const std::size_t c = static_cast<std::size_t>(cx + nx * cy);
+            for (std::uint32_t a = start[c]; a < start[c + 1]; ++a) {
+                for (std::uint32_t b = a + 1; b < start[c + 1]; ++b) pair(members[a], members[b]);
+                for (const auto& o : offsets) {
+                    const std::int64_t ox = cx + o[0], oy = cy + o[1];
+                    if (ox < 0 || ox >= nx || oy >= ny) continue;
+                    const std::size_t d = static_cast<std::size_t>(ox + nx * oy);
+                    for (std::uint32_t b = start[d]; b < start[d + 1]; ++b) pair(members[a], members[b]);
+                }
+            }
+        }
+}
+
+}  // namespace granulab::dem

@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: MIT
+// Stage 6 of the DEM step, fluid part (cfddem spec 5, Tab. 3.1; docs/physics/fluid.md): one-way
+// coupling of spherical particles to an imported flow field: drag on the relative velocity
+// (fluid/drag_laws.hpp), static buoyancy -rho_f V g (Eq. 3.63), the pressure-gradient force
+// -V grad p where the field carries p; and the seed's mutual Newtonian attraction (spec 5.6),
+// all pairs or within a cutoff on a cell grid. The particles' volume is that of a sphere of their
+// radius, V = 4/3 pi R^3.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "fluid/drag_laws.hpp"
+#include "fluid/field_series.hpp"
+#include "model/particle_store.hpp"
+
+namespace granulab::dem {
+
+struct FluidForceConfig {
+    fluid::DragLaw drag;
+    fluid::FluidProperties fluid;
+    bool buoyancy = true;
+    bool pressureGradient = false;
+    Real pressureToPascal = 1;  ///< factor from the field's pressure to [Pa] (rho_f for kinematic p)
+    Real depth = 0;             ///< [m] slab thickness of the voidage cells (di_felice; 0: largest diameter)
+    Real voidageCell = 0;       ///< [m] voidage cell edge (di_felice; 0: the field's node spacing)
+};
+
+struct FluidStats {
+    std::uint64_t outside = 0;  ///< particles outside the field's domain at the last evaluation
+    Real maxReynolds = 0;       ///< largest particle Reynolds number (0 without viscosity)
+    Real minVoidage = 1;        ///< di_felice: smallest voidage seen
+    Vec2 drag;                  ///< [N] total drag force
+};
+
+/// Scratch of the voidage grid, kept between evaluations (no allocation in the steady state).
+struct VoidageScratch {
+    std::vector<Real> solid;  ///< [m^3] particle volume per cell
+    std::vector<Real> eps;    ///< voidage at each particle
+};
+
+/// Adds the fluid forces to s.fx, s.fy (torques: none, spec 5.1). `g` [m/s^2] the gravity of the
+/// evaluation (buoyancy uses it even when the weight is switched off, as the seed does).
+void addFluidForces(model::ParticleStore& s, const fluid::FieldSeries& field, const FluidForceConfig& c,
+                    Vec2 g, FluidStats& stats, VoidageScratch& scratch) noexcept;
+
+/// Mutual attraction F = G m_i m_j / d^2 along the centre line (cfddem Eq. 3.72), skipping
+/// coincident centres; all pairs (cutoff 0) or pairs closer than `cutoff` [m] through a cell grid
+/// (`cells` is scratch). Pairs in a fixed order, so the sums are deterministic.
+void addAttraction(model::ParticleStore& s, Real constant, Real cutoff,
+                   std::vector<std::uint32_t>& cells) noexcept;
+
+}  // namespace granulab::dem
