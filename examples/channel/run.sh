@@ -3,29 +3,32 @@
 # (2 m x 0.5 m channel, 0.1 m square obstacle, inlet 2 m/s, laminar Re = 40), granulab blows
 # small droplets through it (schiller_naumann drag, particles from an inlet on the left edge).
 #
-#   examples/channel/run.sh [--cells N] [--out DIR] [--cfd-only] [-- GRANULAB_ARGS]
+#   examples/channel/run.sh [--cells N] [--out DIR] [--cfd-only] [--no-plot] [-- GRANULAB_ARGS]
 #
 #   --cells N     cells along the obstacle's side (default 8: 20N x 5N - N^2 = 6336 cells;
 #                 4 for a quick test)
 #   --out DIR     output folder (default out/channel under the repository root)
-#   --cfd-only    stop after OpenFOAM (blockMesh, icoFoam, foamToVTK)
+#   --cfd-only    stop after OpenFOAM (blockMesh, icoFoam, foamToVTK, writeCellCentres)
+#   --no-plot     skip plot_trajectories.py
 #   -- ARGS       further arguments for `granulab run`, e.g. -- --set inlet[0].rate=100
 #
 # Steps: (a) source the OpenFOAM environment (Debian package "openfoam", OpenFOAM v1912);
 # (b) copy case/ to DIR/case and set the resolution and time step; (c) blockMesh, icoFoam,
-# foamToVTK there (logs DIR/case/log.*); (d) granulab run particles.toml with the VTK series
-# (DIR/granulab). Timings go to DIR/timings.txt.
+# foamToVTK, postProcess -func writeCellCentres -latestTime there (logs DIR/case/log.*);
+# (d) granulab run particles.toml with the VTK series (DIR/granulab); (e) plot_trajectories.py
+# -> DIR/trajectories.png. Timings go to DIR/timings.txt.
 set -euo pipefail
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 root=$(cd "$here/../.." && pwd)
 
 die() { echo "run.sh: error: $*" >&2; exit 1; }
-usage() { sed -n '2,17p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,19p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
 
 cells=8
 out=""
 cfd_only=0
+plot=1
 extra=()
 while [ $# -gt 0 ]; do
     case "$1" in
@@ -34,6 +37,7 @@ while [ $# -gt 0 ]; do
         --out) [ $# -ge 2 ] || die "--out needs a value"; out=$2; shift 2 ;;
         --out=*) out=${1#*=}; shift ;;
         --cfd-only) cfd_only=1; shift ;;
+        --no-plot) plot=0; shift ;;
         -h|--help) usage; exit 0 ;;
         --) shift; extra=("$@"); break ;;
         *) usage >&2; die "unknown argument '$1'" ;;
@@ -63,7 +67,7 @@ if ! { [ -n "${WM_PROJECT_DIR:-}" ] && command -v icoFoam >/dev/null 2>&1; }; th
         set -eu
     fi
 fi
-for tool in blockMesh icoFoam foamToVTK; do
+for tool in blockMesh icoFoam foamToVTK postProcess; do
     command -v "$tool" >/dev/null 2>&1 ||
         die "OpenFOAM's $tool was not found: install the Debian package openfoam (sudo apt-get install openfoam), or source your OpenFOAM's etc/bashrc first"
 done
@@ -123,6 +127,8 @@ echo "OpenFOAM ($(command -v icoFoam)), $ncells cells ($cells per obstacle side)
 step blockMesh blockMesh
 step icoFoam icoFoam
 step foamToVTK foamToVTK
+# cell centres of the last time (<time>/C, ASCII as controlDict's writeFormat) for the picture
+step writeCellCentres postProcess -func writeCellCentres -latestTime
 vtk="$case_dir/VTK"
 series=$(find "$vtk" -maxdepth 1 -name '*.series' | head -n 1)
 [ -n "$series" ] || die "foamToVTK wrote no .series index into $vtk"
@@ -148,5 +154,14 @@ if ! build/granulab run examples/channel/particles.toml --set "fluid.fields=[\"$
 fi
 t1=$(now)
 echo "granulab $(awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.2f", b - a }')" >> "$timings"
+
+# (e) the picture: trajectories over the air speed at the last time
+if [ "$plot" = 1 ]; then
+    t0=$(now)
+    /usr/bin/python3 examples/channel/plot_trajectories.py "$out" || die "plot_trajectories.py failed"
+    t1=$(now)
+    echo "plot $(awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.2f", b - a }')" >> "$timings"
+    echo "picture: $out/trajectories.png"
+fi
 echo "done: $out/granulab (view: paraview $out/granulab/snapshots.pvd, with $series for the air);"
 echo "      timings in $timings"

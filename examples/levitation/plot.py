@@ -1,23 +1,25 @@
 #!/usr/bin/python3
 """Plot the height y(t) and the vertical speed v_y(t) of the levitating ball (cfddem T6).
 
-    /usr/bin/python3 examples/levitation/plot.py OUT [--radius R] [--png FILE]
+    /usr/bin/python3 examples/levitation/plot.py OUT [--radius R] [--id ID] [--png FILE]
 
 OUT is the folder of examples/levitation/run.sh (default out/levitation). Reads
-  OUT/granulab/CSV/r_y.csv, OUT/granulab/CSV/v_y.csv  (output.particle_series = true: a column
-      `time` [s], then one column per particle id, header `time,0`) [m], [m/s];
+  OUT/granulab/CSV/r_y.csv, OUT/granulab/CSV/v_y.csv  (output.particle_series = true, long
+      format: header `time,id,r_y`, one row per particle per output time) [m], [m/s]; the rows
+      of the ball's id (--id, default the only id present);
   OUT/case/postProcessing/centreline/0/U  (OpenFOAM probes on the centreline x = 3 m at
       y = 1.5, 3, 4.5 m) for the air speed u_f at the ball's height; if it is missing, the
       seed's 3.592 m/s;
-  OUT/granulab/final.csv (column `radius`) for R, unless --radius is given (default 0.02 m).
-Without CSV/ (a granulab that does not write particle series yet), y(t) comes from series.csv's
-potential energy m g y (one ball) and v_y(t) from its differences.
+  OUT/granulab/final.csv: column `radius` for R, unless --radius is given (default 0.02 m), and
+      `fluid_uy`, the air speed at the ball at the end of the run (drawn as a marker).
 Writes OUT/levitation.png (or --png FILE) and prints the final height and speed.
+For all nine time series of the ball (r_x ... alpha) see scripts/plot_particle_series.py.
 
 The analytic levitation speed (cfddem Eq. 5.4) is v = sqrt(8/3 R g (rho_p - rho_f)/(rho_f c_w)),
 3.4993 m/s for R = 0.02 m. In air rising at u_f a ball's terminal velocity is u_f - v: the
-horizontal line in the v_y plot. The dotted line -v (drawn when the ball falls faster than v/2)
-is the terminal fall speed in still air.
+horizontal line in the v_y plot; the marker at the end is u_f - v with u_f the air speed at the
+ball itself (final.csv). The dotted line -v (drawn when the ball falls faster than v/2) is the
+terminal fall speed in still air.
 """
 import argparse
 import csv
@@ -43,52 +45,51 @@ def levitation_speed(radius):
     return math.sqrt(8.0 / 3.0 * radius * G * (RHO_P - RHO_F) / (RHO_F * CW))
 
 
-def read_series(path):
-    """A per-particle series file: returns (time, values of the first particle column)."""
+def read_long(path, quantity):
+    """A long-format particle series file `time,id,<quantity>`: {id: (time, values)}."""
     if not os.path.isfile(path):
-        return None
+        sys.exit(f"plot.py: {path} not found: run granulab with output.particle_series = true "
+                 f"(ball.toml sets it)")
     with open(path, newline="") as f:
-        header = next(csv.reader(f))
-    header = [h.strip() for h in header]
-    if "time" not in header:
-        sys.exit(f"plot.py: {path}: no column 'time' in the header {header}")
+        header = [h.strip() for h in next(csv.reader(f), [])]
+    if header != ["time", "id", quantity]:
+        sys.exit(f"plot.py: {path}: header {','.join(header)}, expected time,id,{quantity}")
     data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
-    it = header.index("time")
-    ip = header.index("0") if "0" in header else next(i for i in range(len(header)) if i != it)
-    return data[:, it], data[:, ip]
+    if data.shape[0] == 0:
+        sys.exit(f"plot.py: {path}: no data rows")
+    ids = data[:, 1].astype(int)
+    return {int(i): (data[ids == i, 0], data[ids == i, 2]) for i in np.unique(ids)}
 
 
-def series_fallback(out):
-    """Without CSV/: y from series.csv's potential energy m g y of the single ball (mass from
-    final.csv), v_y = dy/dt by differences. Returns (t, y, v_y) or exits."""
-    series = os.path.join(out, "granulab", "series.csv")
+def pick(series, path, wanted):
+    """The (time, values) of particle `wanted`, or of the only particle present."""
+    if wanted is None:
+        if len(series) != 1:
+            sys.exit(f"plot.py: {path} holds particles {sorted(series)}; choose one with --id")
+        wanted = next(iter(series))
+    if wanted not in series:
+        sys.exit(f"plot.py: no particle id {wanted} in {path} (ids: {sorted(series)})")
+    return wanted, series[wanted]
+
+
+def read_final(out, ball):
+    """The ball's row of final.csv as a dict (strings), or None."""
     final = os.path.join(out, "granulab", "final.csv")
-    if not (os.path.isfile(series) and os.path.isfile(final)):
-        sys.exit(f"plot.py: {out}/granulab/CSV/r_y.csv not found (needs output.particle_series = "
-                 f"true in ball.toml), nor series.csv and final.csv")
+    if not os.path.isfile(final):
+        return None
     with open(final, newline="") as f:
         rows = list(csv.DictReader(f))
-    with open(series, newline="") as f:
-        header = [h.strip() for h in next(csv.reader(f))]
-    if len(rows) != 1 or "potential_energy" not in header:
-        sys.exit(f"plot.py: {out}/granulab/CSV/r_y.csv not found, and series.csv cannot replace it")
-    data = np.loadtxt(series, delimiter=",", skiprows=1, ndmin=2)
-    t = data[:, header.index("time")]
-    y = data[:, header.index("potential_energy")] / (float(rows[0]["mass"]) * G)
-    print("plot.py: no CSV/r_y.csv (output.particle_series); y from series.csv's potential "
-          "energy, v_y = dy/dt")
-    return t, y, np.gradient(y, t)
+    for row in rows:
+        if row.get("id", "").strip() == str(ball):
+            return row
+    return rows[0] if len(rows) == 1 else None
 
 
-def read_radius(out, given):
+def read_radius(final, given):
     if given is not None:
         return given, "--radius"
-    final = os.path.join(out, "granulab", "final.csv")
-    if os.path.isfile(final):
-        with open(final, newline="") as f:
-            rows = list(csv.DictReader(f))
-        if rows and "radius" in rows[0]:
-            return float(rows[0]["radius"]), "final.csv"
+    if final is not None and final.get("radius"):
+        return float(final["radius"]), "final.csv"
     return 0.02, "default"
 
 
@@ -113,17 +114,20 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("out", nargs="?", default="out/levitation", help="run.sh output folder")
     ap.add_argument("--radius", type=float, default=None, help="ball radius [m]")
+    ap.add_argument("--id", type=int, default=None,
+                    help="the ball's particle id (default: the only id in CSV/)")
     ap.add_argument("--png", default=None, help="output picture (default OUT/levitation.png)")
     a = ap.parse_args()
 
-    ry = read_series(os.path.join(a.out, "granulab", "CSV", "r_y.csv"))
-    vy_ = read_series(os.path.join(a.out, "granulab", "CSV", "v_y.csv"))
-    if ry is not None and vy_ is not None:
-        (t, y), (tv, vy) = ry, vy_
-    else:
-        t, y, vy = series_fallback(a.out)
-        tv = t
-    radius, rsrc = read_radius(a.out, a.radius)
+    ry_path = os.path.join(a.out, "granulab", "CSV", "r_y.csv")
+    vy_path = os.path.join(a.out, "granulab", "CSV", "v_y.csv")
+    ball, (t, y) = pick(read_long(ry_path, "r_y"), ry_path, a.id)
+    _, (tv, vy) = pick(read_long(vy_path, "v_y"), vy_path, ball)
+    final = read_final(a.out, ball)
+    radius, rsrc = read_radius(final, a.radius)
+    u_ball = None  # air speed u_fy at the ball at the end of the run (final.csv)
+    if final is not None and final.get("fluid_uy", "").strip():
+        u_ball = float(final["fluid_uy"])
     v_lev = levitation_speed(radius)
     probe = read_probe(a.out)
     if probe is not None:
@@ -133,7 +137,7 @@ def main():
     v_rise = u_flow - v_lev
 
     fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
-    ax1.plot(t, y, color="C0", label="ball centre")
+    ax1.plot(t, y, color="C0", label=f"ball centre (particle id {ball})")
     ax1.axhline(y[0], color="0.6", lw=0.8, ls=":", label=f"start, y = {y[0]:g} m")
     ax1.set_ylabel("height y [m]")
     ax1.set_title(f"polystyrene ball, R = {radius:g} m, in air rising at {u_flow:.3f} m/s")
@@ -149,13 +153,18 @@ def main():
     if probe is not None:
         ax2.plot(probe[0], probe[1] - v_lev, color="C2", lw=0.8, alpha=0.6,
                  label="$u_f(t) - v$ (centreline probe at y = 3 m)")
+    if u_ball is not None:
+        ax2.plot([tv[-1]], [u_ball - v_lev], "D", color="C4", ms=7, mec="k", mew=0.6, zorder=5,
+                 label=f"$u_{{f,ball}} - v$: air at the ball {u_ball:.3f} m/s at "
+                       f"t = {tv[-1]:g} s (y = {y[-1]:.2f} m)")
     ax2.set_xlabel("time t [s]")
     ax2.set_ylabel("vertical speed $v_y$ [m/s]")
     ax2.legend(loc="lower right", fontsize=8)
     ax2.grid(alpha=0.3)
     # the interesting part is near zero: the fall at the start reaches about -1 m/s
     lo = min(float(np.min(vy)), -v_lev * 0.1)
-    ax2.set_ylim(max(lo, -v_lev * 1.1) - 0.05, max(float(np.max(vy)), v_rise) + 0.1)
+    top = max(float(np.max(vy)), v_rise, u_ball - v_lev if u_ball is not None else v_rise)
+    ax2.set_ylim(max(lo, -v_lev * 1.1) - 0.05, top + 0.1)
 
     fig.tight_layout()
     png = a.png or os.path.join(a.out, "levitation.png")
@@ -164,6 +173,9 @@ def main():
           f"air u_f = {u_flow:.4f} m/s ({flow_src}); expected rise u_f - v = {v_rise:+.4f} m/s")
     print(f"at t = {t[-1]:g} s: y = {y[-1]:.4f} m (start {y[0]:g}), v_y = {vy[-1]:+.4f} m/s; "
           f"lowest y = {np.min(y):.4f} m at t = {t[int(np.argmin(y))]:g} s")
+    if u_ball is not None:
+        print(f"air at the ball at the end (final.csv): u_fy = {u_ball:.4f} m/s, "
+              f"u_fy - v = {u_ball - v_lev:+.4f} m/s")
     print(f"wrote {png}")
 
 

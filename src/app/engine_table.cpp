@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "app/convert.hpp"
 #include "app/dem/dem_engine.hpp"
 #include "app/edmd/edmd_engine.hpp"
 #include "core/error.hpp"
@@ -49,6 +50,8 @@ std::vector<io::SceneSections> sceneSections() {
 }
 
 model::SceneDef readScene(const std::string& path, const std::vector<io::Override>& overrides) {
+    // A folder of the cfddem seed's input files (conditions.txt, boundary.txt, startvalue.txt).
+    if (isCfddemInput(path)) return readCfddemScene(path, overrides);
     return io::readScene(path, overrides, sceneSections());
 }
 

@@ -65,6 +65,10 @@ usage (each command also has --help, with an example):
       after the current step or event, writes a checkpoint and prints how to resume.
   granulab info SCENE [--set key=value]...
       particles, materials, contact time, advised time step, memory estimate
+      (SCENE may also be a folder of the cfddem seed's conditions.txt, boundary.txt and
+      startvalue.txt, for run and info alike)
+  granulab convert DIR SCENE.toml [--overwrite]
+      write the native TOML scene of such a folder
   granulab render DIR --png [--width PIXELS]
       one PNG per snapshot of a finished or running simulation, into DIR/png/
   granulab analyze DIR [--rmax RADII] [--bins N] [--delta D] [--per-bin N] [--quiet]

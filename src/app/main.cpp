@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// granulab command line (CLI11): run, info, analyze, render, master-equation, help, --version.
+// granulab command line (CLI11): run, info, convert, analyze, render, master-equation, help, --version.
 // Maps errors to exit codes (app/exit_codes.hpp): 2 bad input, 3 unstable run, 130/143 a run
 // stopped by SIGINT/SIGTERM (app/run_loop.cpp), 1 anything else.
 #include <fmt/format.h>
@@ -9,6 +9,7 @@
 #include <exception>
 
 #include "app/analyze.hpp"
+#include "app/convert.hpp"
 #include "app/info.hpp"
 #include "app/render.hpp"
 #include "app/run.hpp"
@@ -25,7 +26,8 @@ int main(int argc, char** argv) {
     app::RunOptions runOpt;
     std::vector<std::string> sets;
     auto* run = cli.add_subcommand("run", "run a scene");
-    run->add_option("scene", runOpt.scene, "scene file (.toml)")->required();
+    run->add_option("scene", runOpt.scene, "scene file (.toml), or a folder of the cfddem seed's input files")
+        ->required();
     run->add_option("--out", runOpt.outDir, "output folder (default out/<scene name>)");
     run->add_option("--set", sets, "override a scene key: --set dem.dt=1e-5 (repeatable)")->take_all();
     run->add_option("--resume", runOpt.resumeDir, "continue from DIR/checkpoint.bin (appends to DIR)");
@@ -39,9 +41,25 @@ int main(int argc, char** argv) {
 
     std::string infoScene;
     auto* info = cli.add_subcommand("info", "describe a scene: particles, advised time step, memory");
-    info->add_option("scene", infoScene, "scene file")->required();
+    info->add_option("scene", infoScene, "scene file, or a folder of the cfddem seed's input files")
+        ->required();
     info->add_option("--set", sets, "override a scene key")->take_all();
     info->footer("example: granulab info examples/disks_in_box.toml --set dem.dt=2e-5");
+
+    app::ConvertOptions convertOpt;
+    auto* convert = cli.add_subcommand(
+        "convert",
+        "write the native TOML scene of the cfddem seed's input files (conditions.txt, boundary.txt, "
+        "startvalue.txt)");
+    convert
+        ->add_option("dir", convertOpt.dir, "folder holding conditions.txt, boundary.txt, startvalue(s).txt")
+        ->required();
+    convert->add_option("scene", convertOpt.out, "TOML scene file to write")->required();
+    convert->add_flag("--overwrite", convertOpt.overwrite, "replace an existing scene file");
+    convert->add_flag("--quiet,-q", convertOpt.quiet, "no message");
+    convert->footer(
+        "example: granulab convert examples/cfddem_trio trio.toml && granulab run trio.toml\n"
+        "(granulab run DIR and granulab info DIR read such a folder directly)");
 
     app::RenderOptions renderOpt;
     bool png = false;
@@ -163,6 +181,7 @@ int main(int argc, char** argv) {
             return app::runCommand(runOpt);
         }
         if (*info) return app::infoCommand(infoScene, overrides);
+        if (*convert) return app::convertCommand(convertOpt);
         if (*analyze) return app::analyzeCommand(analyzeOpt);
         if (*master) {
             try {

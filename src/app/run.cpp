@@ -75,7 +75,10 @@ void claimOutputFolder(const RunOptions& opt, const std::string& dir) {
 }  // namespace
 
 std::string defaultOutDir(const std::string& scenePath) {
-    return (fs::path("out") / fs::path(scenePath).stem()).string();
+    fs::path p(scenePath);
+    if (!p.has_filename()) p = p.parent_path();  // a cfddem folder written as DIR/
+    std::error_code ec;
+    return (fs::path("out") / (fs::is_directory(p, ec) ? p.filename() : p.stem())).string();
 }
 
 int runCommand(const RunOptions& opt) {

@@ -23,7 +23,7 @@ struct RunOptions {
 
 int runCommand(const RunOptions& options);
 
-/// Default output folder for a scene path: out/<stem>.
+/// Default output folder for a scene path: out/<stem> (a cfddem folder: out/<folder name>).
 std::string defaultOutDir(const std::string& scenePath);
 
 }  // namespace granulab::app

@@ -40,13 +40,20 @@ void voidages(const model::ParticleStore& s, Real h, Real depth, VoidageScratch&
 template <class Drag, class Method>
 void fluidLoop(model::ParticleStore& s, const Drag& drag, const Method& method,
                const fluid::FieldSeries& field, const FluidForceConfig& c, Vec2 g,
-               const std::vector<Real>* voidage, FluidStats& stats) noexcept {
+               const std::vector<Real>* voidage, fluid::LocalPatch* patches, FluidStats& stats) noexcept {
     const fluid::FieldInterpolator* second = field.second();
     const Real w = field.weight();
     for (std::size_t i = 0; i < s.size(); ++i) {
         const Vec2 pos{s.x[i], s.y[i]};
         fluid::FluidSample f;
-        method.sample(pos, f);
+        if constexpr (std::is_same_v<Method, fluid::CellMesh> || std::is_same_v<Method, fluid::BilinearGrid>) {
+            if (patches[i].interior(pos))
+                f.u = patches[i].velocity(pos);  // still in its cell: no field memory touched
+            else
+                method.sample(pos, f, patches[i]);
+        } else {
+            method.sample(pos, f);
+        }
         if (second) {
             const fluid::FluidSample f2 = second->sample(pos);
             f.u = f.u * (1 - w) + f2.u * w;
@@ -86,10 +93,15 @@ void addFluidForces(model::ParticleStore& s, const fluid::FieldSeries& field, co
         voidage = &eps;
         stats.minVoidage = *std::min_element(eps.begin(), eps.end());
     }
+    if (scratch.patchesField != &field.first() || scratch.patches.size() != s.size()) {
+        scratch.patches.assign(s.size(), fluid::LocalPatch{});  // a new field, or particles in or out
+        scratch.patchesField = &field.first();
+    }
+    fluid::LocalPatch* patches = scratch.patches.data();
     std::visit(
         [&](const auto& drag) {
             field.first().visit(
-                [&](const auto& method) { fluidLoop(s, drag, method, field, c, g, voidage, stats); });
+                [&](const auto& method) { fluidLoop(s, drag, method, field, c, g, voidage, patches, stats); });
         },
         c.drag);
 }

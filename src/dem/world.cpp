@@ -20,6 +20,8 @@ const char* stageName(Stage s) noexcept {
             return "neighbors";
         case Stage::Forces:
             return "forces";
+        case Stage::Fluid:
+            return "fluid";
         case Stage::Correct:
             return "correct";
         case Stage::Updaters:
@@ -141,6 +143,9 @@ void World::evaluateForces(const BodyForces& body, const DriftVelocities& drift,
     }
     computeForces(m_store, m_walls, m_list, m_laws, body, drift, m_config.dt, trial, m_stats, m_wallForce,
                   m_shapes, log);
+}
+
+void World::evaluateFieldForces(const BodyForces& body) {
     if (m_field)
         addFluidForces(m_store, *m_field, m_config.fluid->forces, body.gravity, m_fluidStats, m_voidage);
     if (m_config.attraction)
@@ -189,7 +194,9 @@ void World::initialize() {
     rebuildNeighbors();
     if (m_field) m_field->update(time());
     // Set-up evaluation: nothing has moved yet, so no tangential displacement (drift = none).
-    evaluateForces(bodyForcesAt(m_step), DriftVelocities{}, false);
+    const BodyForces body = bodyForcesAt(m_step);
+    evaluateForces(body, DriftVelocities{}, false);
+    evaluateFieldForces(body);
 }
 
 std::uint32_t World::step() {
@@ -235,6 +242,10 @@ std::uint32_t World::step() {
         {  // 4+6 narrow phase + contact laws + body forces. reads: x, v, omega; writes: f, torque, history
             ScopedStage t(m_timers, Stage::Forces);
             evaluateForces(body, m_integrator->driftVelocities(), trial);
+        }
+        if (m_field || m_config.attraction) {  // 6 fluid forces and attraction
+            ScopedStage t(m_timers, Stage::Fluid);
+            evaluateFieldForces(body);
         }
         ++m_forceEvaluations;
         bool accepted;

@@ -28,7 +28,7 @@
 
 namespace granulab::dem {
 
-enum class Stage { Predict, Neighbors, Forces, Correct, Updaters, Count };
+enum class Stage { Predict, Neighbors, Forces, Fluid, Correct, Updaters, Count };
 const char* stageName(Stage s) noexcept;
 
 /// Global viscous damping active for steps with fromStep <= step < toStep.
@@ -153,6 +153,8 @@ public:
 private:
     void rebuildNeighbors();
     void evaluateForces(const BodyForces& body, const DriftVelocities& drift, bool trial);
+    /// Fluid forces and mutual attraction (after the contact forces; stage Fluid).
+    void evaluateFieldForces(const BodyForces& body);
     BodyForces bodyForcesAt(std::int64_t step) const noexcept;
     Vec2 gravityAt(Real t) const noexcept {
         return m_config.gravitySchedule ? dem::gravityAt(*m_config.gravitySchedule, t) : m_config.gravity;

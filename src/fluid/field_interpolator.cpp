@@ -63,8 +63,9 @@ bool tensorGridOf(const std::vector<Real>& x, const std::vector<Real>& y, std::v
     const auto [ylo, yhi] = std::minmax_element(y.begin(), y.end());
     const Real tol = 1e-9 * std::max({*xhi - *xlo, *yhi - *ylo, 1e-300});
     xs = distinctSorted(x, tol);
+    if (xs.size() < 2 || n % xs.size() != 0) return false;  // scattered nodes: (nearly) all x distinct
     ys = distinctSorted(y, tol);
-    if (xs.size() < 2 || ys.size() < 2 || xs.size() * ys.size() != n) return false;
+    if (ys.size() < 2 || xs.size() * ys.size() != n) return false;
     const std::uint32_t unset = 0xffffffffu;
     order.assign(n, unset);
     for (std::size_t k = 0; k < n; ++k) {
@@ -88,7 +89,8 @@ std::size_t BilinearGrid::cellOf(const std::vector<Real>& lines, bool uniform, R
     return i == 0 ? 0 : std::min(i - 1, last);
 }
 
-void BilinearGrid::sample(Vec2 pos, FluidSample& out) const noexcept {
+void BilinearGrid::sample(Vec2 pos, FluidSample& out, LocalPatch& patch) const noexcept {
+    patch.kind = LocalPatch::kNone;
     out.inside = pos.x >= xs.front() && pos.x <= xs.back() && pos.y >= ys.front() && pos.y <= ys.back();
     if (!out.inside) {
         if (outside == Outside::Zero) {
@@ -101,15 +103,21 @@ void BilinearGrid::sample(Vec2 pos, FluidSample& out) const noexcept {
     const std::size_t nx = xs.size();
     const std::size_t i = cellOf(xs, uniformX, dx, pos.x), j = cellOf(ys, uniformY, dy, pos.y);
     const Real x1 = xs[i], x2 = xs[i + 1], y1 = ys[j], y2 = ys[j + 1];
-    // cfddem Eq. 3.66-3.68: along x on the rows y1 and y2, then along y.
-    const Real ax = (x2 - pos.x) / (x2 - x1), bx = (pos.x - x1) / (x2 - x1);
-    const Real ay = (y2 - pos.y) / (y2 - y1), by = (pos.y - y1) / (y2 - y1);
     const std::size_t k11 = i + nx * j, k21 = k11 + 1, k12 = k11 + nx, k22 = k12 + 1;
-    const auto blend = [&](const std::vector<Real>& v) {
-        return ay * (ax * v[k11] + bx * v[k21]) + by * (ax * v[k12] + bx * v[k22]);
-    };
-    out.u = {blend(ux), blend(uy)};
-    out.p = p.empty() ? 0 : blend(p);
+    LocalPatch cell;
+    cell.kind = LocalPatch::kRectangle;
+    const Real c[12] = {x1, x2, y1, y2, ux[k11], uy[k11], ux[k21], uy[k21], ux[k12], uy[k12], ux[k22], uy[k22]};
+    std::copy(c, c + 12, cell.c);
+    // cfddem Eq. 3.66-3.68: along x on the rows y1 and y2, then along y (LocalPatch::velocity).
+    out.u = cell.velocity(pos);
+    if (!p.empty()) {
+        const Real ax = (x2 - pos.x) / (x2 - x1), bx = (pos.x - x1) / (x2 - x1);
+        const Real ay = (y2 - pos.y) / (y2 - y1), by = (pos.y - y1) / (y2 - y1);
+        out.p = ay * (ax * p[k11] + bx * p[k21]) + by * (ax * p[k12] + bx * p[k22]);
+    } else {
+        out.p = 0;
+    }
+    if (out.inside) patch = cell;
 }
 
 void ShepardNodes::sample(Vec2 pos, FluidSample& out) const noexcept {
@@ -142,30 +150,47 @@ void ShepardNodes::sample(Vec2 pos, FluidSample& out) const noexcept {
     out.p = pr / wsum;
 }
 
-void CellMesh::sample(Vec2 pos, FluidSample& out) const noexcept {
+bool CellMesh::inTriangle(std::size_t t, Vec2 pos, FluidSample& out, LocalPatch& patch) const noexcept {
+    const std::uint32_t* k = &tri[3 * t];
+    const Node& n0 = nodes[k[0]];
+    const Node& n1 = nodes[k[1]];
+    const Node& n2 = nodes[k[2]];
+    const Vec2 e1{n1.x - n0.x, n1.y - n0.y}, e2{n2.x - n0.x, n2.y - n0.y}, d{pos.x - n0.x, pos.y - n0.y};
+    const Real det = cross(e1, e2);
+    const Real l1 = cross(d, e2) / det, l2 = cross(e1, d) / det, l0 = 1 - l1 - l2;
+    constexpr Real eps = -1e-12;
+    if (l0 < eps || l1 < eps || l2 < eps) return false;
+    out.inside = true;
+    // The triangle's linear interpolant, built the same way whoever asks (LocalPatch).
+    patch.kind = LocalPatch::kTriangle;
+    const Real c[12] = {n0.x,         n0.y,         e2.y / det,   -e2.x / det,  -e1.y / det,  e1.x / det,
+                        n0.ux,        n0.uy,        n1.ux - n0.ux, n1.uy - n0.uy, n2.ux - n0.ux, n2.uy - n0.uy};
+    std::copy(c, c + 12, patch.c);
+    out.u = patch.velocity(pos);
+    out.p = p.empty() ? 0 : l0 * p[k[0]] + l1 * p[k[1]] + l2 * p[k[2]];
+    return true;
+}
+
+void CellMesh::sample(Vec2 pos, FluidSample& out, LocalPatch& patch) const noexcept {
     out.u = {};
     out.p = 0;
-    const Real fx = std::floor((pos.x - lo.x) / bin), fy = std::floor((pos.y - lo.y) / bin);
     out.inside = false;
+    patch.kind = LocalPatch::kNone;
+    const Real fx = std::floor((pos.x - lo.x) / bin), fy = std::floor((pos.y - lo.y) / bin);
     if (fx >= 0 && fy >= 0 && fx < static_cast<Real>(nx) && fy < static_cast<Real>(ny)) {
         const std::size_t b =
             static_cast<std::size_t>(fx) + static_cast<std::size_t>(nx) * static_cast<std::size_t>(fy);
-        for (std::uint32_t q = binStart[b]; q < binStart[b + 1]; ++q) {
-            const std::uint32_t* t = &tri[3 * static_cast<std::size_t>(binTris[q])];
-            const Vec2 a{x[t[0]], y[t[0]]}, e1 = Vec2{x[t[1]], y[t[1]]} - a, e2 = Vec2{x[t[2]], y[t[2]]} - a;
-            const Real det = cross(e1, e2);
-            const Vec2 d = pos - a;
-            const Real l1 = cross(d, e2) / det, l2 = cross(e1, d) / det, l0 = 1 - l1 - l2;
-            constexpr Real eps = -1e-12;
-            if (l0 < eps || l1 < eps || l2 < eps) continue;
-            out.inside = true;
-            out.u = {l0 * ux[t[0]] + l1 * ux[t[1]] + l2 * ux[t[2]],
-                     l0 * uy[t[0]] + l1 * uy[t[1]] + l2 * uy[t[2]]};
-            out.p = p.empty() ? 0 : l0 * p[t[0]] + l1 * p[t[1]] + l2 * p[t[2]];
-            return;
+        for (std::uint32_t q = binStart[b]; q < binStart[b + 1]; ++q)
+            if (inTriangle(binTris[q], pos, out, patch)) return;
+    }
+    if (outside == Outside::Nearest) {
+        std::uint32_t node = 0;
+        Real d2 = 0;
+        if (nearestIndex.nearest(nodeX.data(), nodeY.data(), pos, 1, &node, &d2) == 1) {
+            out.u = {nodes[node].ux, nodes[node].uy};
+            out.p = p.empty() ? 0 : p[node];
         }
     }
-    if (outside == Outside::Nearest) nearestValue(nearestIndex, x, y, ux, uy, p, pos, out);
 }
 
 namespace {
@@ -200,11 +225,21 @@ ShepardNodes makeShepard(FlowField& f, const InterpolatorOptions& o, Vec2 lo, Ve
     return s;
 }
 
+/// Permutation that lists the items by ascending key (counting sort, stable): order[new] = old.
+std::vector<std::uint32_t> orderByKey(const std::vector<std::uint32_t>& key, std::size_t keys) {
+    std::vector<std::uint32_t> start(keys + 1, 0), order(key.size());
+    for (const std::uint32_t k : key) ++start[k + 1];
+    std::partial_sum(start.begin(), start.end(), start.begin());
+    for (std::size_t i = 0; i < key.size(); ++i) order[start[key[i]]++] = static_cast<std::uint32_t>(i);
+    return order;
+}
+
 CellMesh makeCells(FlowField& f, const InterpolatorOptions& o, Vec2 lo, Vec2 hi) {
     CellMesh m;
     // Fan triangulation of each convex cell; degenerate triangles (collinear corners) are dropped.
+    std::vector<std::uint32_t> tri;
     const std::size_t cells = f.cellOffsets.size() - 1;
-    m.tri.reserve(3 * (f.cellNodes.size() - 2 * cells));
+    tri.reserve(3 * (f.cellNodes.size() - 2 * cells));
     for (std::size_t c = 0; c < cells; ++c) {
         const std::uint32_t b = f.cellOffsets[c], e = f.cellOffsets[c + 1];
         for (std::uint32_t k = b + 1; k + 1 < e; ++k) {
@@ -212,43 +247,81 @@ CellMesh makeCells(FlowField& f, const InterpolatorOptions& o, Vec2 lo, Vec2 hi)
             const Vec2 a{f.x[t[0]], f.y[t[0]]};
             const Real area2 = cross(Vec2{f.x[t[1]], f.y[t[1]]} - a, Vec2{f.x[t[2]], f.y[t[2]]} - a);
             if (area2 == 0) continue;
-            m.tri.insert(m.tri.end(), t, t + 3);
+            tri.insert(tri.end(), t, t + 3);
         }
     }
     std::vector<std::uint32_t>().swap(f.cellOffsets);
     std::vector<std::uint32_t>().swap(f.cellNodes);
-    const std::size_t ntri = m.tri.size() / 3;
+    const std::size_t ntri = tri.size() / 3;
     if (ntri == 0) throw std::invalid_argument("the field's cells have no area");
-    m.x = std::move(f.x);
-    m.y = std::move(f.y);
-    m.ux = std::move(f.ux);
-    m.uy = std::move(f.uy);
-    if (o.keepPressure) m.p = std::move(f.p);
-    // Bins of about two triangles each; every triangle is listed in each bin its box touches.
+    // Bins of about four triangles' area; a triangle is listed in every bin its box touches (about
+    // two on average).
     const Real w = std::max(hi.x - lo.x, 1e-300), h = std::max(hi.y - lo.y, 1e-300);
     m.lo = lo;
-    m.bin = std::max(std::sqrt(2 * w * h / static_cast<Real>(ntri)), 1e-6 * std::max(w, h));
+    m.bin = std::max(std::sqrt(8 * w * h / static_cast<Real>(ntri)), 1e-6 * std::max(w, h));
     m.nx = static_cast<std::int64_t>(std::floor(w / m.bin)) + 1;
     m.ny = static_cast<std::int64_t>(std::floor(h / m.bin)) + 1;
+    const auto clampBin = [](Real v, std::int64_t n) {
+        return v <= 0 ? std::int64_t{0} : (v >= static_cast<Real>(n - 1) ? n - 1 : static_cast<std::int64_t>(v));
+    };
+    const auto binOf = [&](Real x, Real y) {
+        return static_cast<std::uint32_t>(clampBin(std::floor((x - lo.x) / m.bin), m.nx) +
+                                          m.nx * clampBin(std::floor((y - lo.y) / m.bin), m.ny));
+    };
+    const std::size_t bins = static_cast<std::size_t>(m.nx * m.ny);
+    // Nodes in bin order, one record each (the particles, sorted in space, then read them in order).
+    const std::size_t n = f.size();
+    std::vector<std::uint32_t> key(n);
+    for (std::size_t i = 0; i < n; ++i) key[i] = binOf(f.x[i], f.y[i]);
+    const std::vector<std::uint32_t> nodeOrder = orderByKey(key, bins);
+    std::vector<std::uint32_t> newIndex(n);
+    m.nodes.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::uint32_t i = nodeOrder[k];
+        newIndex[i] = static_cast<std::uint32_t>(k);
+        m.nodes[k] = {f.x[i], f.y[i], f.ux[i], f.uy[i]};
+    }
+    if (o.keepPressure && f.hasPressure()) {
+        m.p.resize(n);
+        for (std::size_t k = 0; k < n; ++k) m.p[k] = f.p[nodeOrder[k]];
+    }
+    std::vector<Real>().swap(f.ux);
+    std::vector<Real>().swap(f.uy);
+    std::vector<Real>().swap(f.p);
+    // Triangles in the bin order of their centroids, over the new node numbers.
+    key.assign(ntri, 0);
+    for (std::size_t t = 0; t < ntri; ++t) {
+        Real cx = 0, cy = 0;
+        for (int k = 0; k < 3; ++k) {
+            cx += f.x[tri[3 * t + k]] / 3;
+            cy += f.y[tri[3 * t + k]] / 3;
+        }
+        key[t] = binOf(cx, cy);
+    }
+    const std::vector<std::uint32_t> triOrder = orderByKey(key, bins);
+    std::vector<std::uint32_t>().swap(key);
+    m.tri.resize(tri.size());
+    for (std::size_t t = 0; t < ntri; ++t)
+        for (int k = 0; k < 3; ++k) m.tri[3 * t + k] = newIndex[tri[3 * triOrder[t] + k]];
+    std::vector<std::uint32_t>().swap(tri);
+    std::vector<std::uint32_t>().swap(newIndex);
     const auto binRange = [&](std::size_t t, std::int64_t& i0, std::int64_t& i1, std::int64_t& j0,
                               std::int64_t& j1) {
-        Real xa = m.x[m.tri[3 * t]], xb = xa, ya = m.y[m.tri[3 * t]], yb = ya;
+        const CellMesh::Node& a = m.nodes[m.tri[3 * t]];
+        Real xa = a.x, xb = xa, ya = a.y, yb = ya;
         for (int k = 1; k < 3; ++k) {
-            xa = std::min(xa, m.x[m.tri[3 * t + k]]);
-            xb = std::max(xb, m.x[m.tri[3 * t + k]]);
-            ya = std::min(ya, m.y[m.tri[3 * t + k]]);
-            yb = std::max(yb, m.y[m.tri[3 * t + k]]);
+            const CellMesh::Node& c = m.nodes[m.tri[3 * t + k]];
+            xa = std::min(xa, c.x);
+            xb = std::max(xb, c.x);
+            ya = std::min(ya, c.y);
+            yb = std::max(yb, c.y);
         }
-        const auto clampBin = [](Real f, std::int64_t n) {
-            return f <= 0 ? std::int64_t{0}
-                          : (f >= static_cast<Real>(n - 1) ? n - 1 : static_cast<std::int64_t>(f));
-        };
         i0 = clampBin(std::floor((xa - lo.x) / m.bin), m.nx);
         i1 = clampBin(std::floor((xb - lo.x) / m.bin), m.nx);
         j0 = clampBin(std::floor((ya - lo.y) / m.bin), m.ny);
         j1 = clampBin(std::floor((yb - lo.y) / m.bin), m.ny);
     };
-    m.binStart.assign(static_cast<std::size_t>(m.nx * m.ny) + 1, 0);
+    m.binStart.assign(bins + 1, 0);
     std::int64_t i0, i1, j0, j1;
     for (std::size_t t = 0; t < ntri; ++t) {
         binRange(t, i0, i1, j0, j1);
@@ -265,7 +338,17 @@ CellMesh makeCells(FlowField& f, const InterpolatorOptions& o, Vec2 lo, Vec2 hi)
                 m.binTris[fill[static_cast<std::size_t>(i + m.nx * j)]++] = static_cast<std::uint32_t>(t);
     }
     m.outside = o.outside;
-    if (o.outside == Outside::Nearest) m.nearestIndex = NodeIndex(m.x, m.y);
+    if (o.outside == Outside::Nearest) {
+        m.nodeX.resize(n);
+        m.nodeY.resize(n);
+        for (std::size_t k = 0; k < n; ++k) {
+            m.nodeX[k] = m.nodes[k].x;
+            m.nodeY[k] = m.nodes[k].y;
+        }
+        m.nearestIndex = NodeIndex(m.nodeX, m.nodeY);
+    }
+    std::vector<Real>().swap(f.x);
+    std::vector<Real>().swap(f.y);
     return m;
 }
 
@@ -318,14 +401,14 @@ Vec2 FieldInterpolator::pressureGradient(Vec2 pos) const noexcept {
     Vec2 grad;
     for (int axis = 0; axis < 2; ++axis) {
         const Vec2 e = axis == 0 ? Vec2{d, 0} : Vec2{0, d};
-        const FluidSample plus = sample(pos + e), minus = sample(pos - e), centre = sample(pos);
+        const FluidSample plus = sample(pos + e), minus = sample(pos - e);
         Real g = 0;
-        if (plus.inside && minus.inside)
+        if (plus.inside && minus.inside) {
             g = (plus.p - minus.p) / (2 * d);
-        else if (plus.inside && centre.inside)
-            g = (plus.p - centre.p) / d;
-        else if (minus.inside && centre.inside)
-            g = (centre.p - minus.p) / d;
+        } else if (plus.inside != minus.inside) {  // at the domain's edge: one-sided
+            const FluidSample centre = sample(pos);
+            if (centre.inside) g = plus.inside ? (plus.p - centre.p) / d : (centre.p - minus.p) / d;
+        }
         (axis == 0 ? grad.x : grad.y) = g;
     }
     return grad;
@@ -357,8 +440,8 @@ std::size_t FieldInterpolator::memoryBytes() const noexcept {
                 return bytes(m.x) + bytes(m.y) + bytes(m.ux) + bytes(m.uy) + bytes(m.p) +
                        m.index.memoryBytes();
             } else {
-                return bytes(m.x) + bytes(m.y) + bytes(m.ux) + bytes(m.uy) + bytes(m.p) +
-                       m.tri.capacity() * 4 + m.binStart.capacity() * 4 + m.binTris.capacity() * 4 +
+                return m.nodes.capacity() * sizeof(CellMesh::Node) + bytes(m.p) + m.tri.capacity() * 4 +
+                       m.binStart.capacity() * 4 + m.binTris.capacity() * 4 + bytes(m.nodeX) + bytes(m.nodeY) +
                        m.nearestIndex.memoryBytes();
             }
         },

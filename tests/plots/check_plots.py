@@ -1,14 +1,19 @@
 #!/usr/bin/env python3
-"""CTest driver of scripts/plot_series.py and scripts/plot_analysis.py (label cli).
+"""CTest driver of scripts/plot_series.py, plot_analysis.py and plot_particle_series.py (label cli).
 
-Usage: python3 tests/plots/check_plots.py series|analysis|errors WORKDIR
+Usage: python3 tests/plots/check_plots.py series|analysis|errors|particles WORKDIR
 
 series    plots the fixtures dem_silo/ and edmd_cooling/ (trimmed real series.csv and
           summary.json) and checks the expected PNGs
 analysis  plots every table of fixtures/analysis/ (made by make_fixtures.py) and checks the
           expected PNGs
-errors    missing folder, missing table, malformed header, non-numeric cell, ragged row:
-          exit status 2 and a message naming the file
+errors    missing folder, missing table, malformed header, non-numeric cell, ragged row,
+          a run without CSV/ (plot_particle_series.py): exit status 2 and a message naming
+          the file
+particles writes a small run folder with CSV/*.csv in the long format (time,id,<quantity>;
+          three particles, one entering late and one leaving early, a cut last row) into
+          WORKDIR and plots it with plot_particle_series.py: all ids, --ids, more than 20
+          particles (a note), an unknown id (exit 2)
 A PNG passes when it has the PNG signature and an IHDR chunk, is at least 600 x 400 pixels and
 larger than 8 kB. Exit status 77 (CTest SKIP_RETURN_CODE) when matplotlib or numpy is missing.
 """
@@ -138,6 +143,8 @@ def check_errors(work):
         ([os.path.join(SCRIPTS, "plot_analysis.py"), bad, "no_units"], "no_units.csv:1"),
         ([os.path.join(SCRIPTS, "plot_analysis.py"), bad, "letters"], "letters.csv:4"),
         ([os.path.join(SCRIPTS, "plot_analysis.py"), bad, "ragged"], "ragged.csv:3"),
+        ([os.path.join(SCRIPTS, "plot_particle_series.py"), run_dir],
+         "output.particle_series = true"),
     ]
     failures = []
     for args, needle in cases:
@@ -149,6 +156,62 @@ def check_errors(work):
     return report(failures)
 
 
+QUANTITIES = ["r_x", "r_y", "phi", "v_x", "v_y", "omega", "a_x", "a_y", "alpha"]
+
+
+def write_particle_run(folder, n_particles, cut_last_row=False):
+    """A fake run folder with CSV/<q>.csv in the long format: particle i lives from
+    t = 0.1 i (for i < 3; later ones from 0) to 2 s (particle 1 leaves at 1.2 s)."""
+    import math
+    csv_dir = os.path.join(folder, "CSV")
+    os.makedirs(csv_dir, exist_ok=True)
+    for k, q in enumerate(QUANTITIES):
+        with open(os.path.join(csv_dir, q + ".csv"), "w") as f:
+            f.write(f"time,id,{q}\n")
+            for step in range(41):
+                t = 0.05 * step
+                for i in range(n_particles):
+                    if (i < 3 and t < 0.1 * i - 1e-12) or (i == 1 and t > 1.2 + 1e-12):
+                        continue
+                    v = math.sin(1.3 * t + 0.4 * i + k) * (1 + 0.1 * i) + 0.5 * k
+                    f.write(f"{t:.17g},{i},{v:.17g}\n")
+            if cut_last_row:
+                f.write("2.05,0")
+    with open(os.path.join(folder, "summary.json"), "w") as f:
+        f.write('{"engine": "dem", "scene": "fixture.toml"}\n')
+
+
+def check_particles(work):
+    failures = []
+    small = fresh(work, "particles_small")
+    write_particle_run(small, 3, cut_last_row=True)
+    script = os.path.join(SCRIPTS, "plot_particle_series.py")
+    r = run([script, small], 0)
+    if r is None:
+        return 1
+    check_png(os.path.join(small, "particle_series.png"), failures)
+    if "incomplete last row" not in r.stderr:
+        failures.append("the cut last row was not reported: " + r.stderr)
+    out = os.path.join(work, "particles_ids.png")
+    if run([script, small, "--ids", "2,0", "--out", out], 0) is None:
+        return 1
+    check_png(out, failures)
+    many = fresh(work, "particles_many")
+    write_particle_run(many, 25)
+    r = run([script, many], 0)
+    if r is None:
+        return 1
+    check_png(os.path.join(many, "particle_series.png"), failures)
+    if "first 20 of 25" not in r.stderr:
+        failures.append("no note about drawing 20 of 25 particles: " + r.stderr)
+    r = run([script, small, "--ids", "7"], 2)
+    if r is None:
+        failures.append("an unknown id did not exit 2")
+    elif "no particle id 7" not in r.stderr:
+        failures.append("message of an unknown id: " + r.stderr)
+    return report(failures)
+
+
 def report(failures):
     for f in failures:
         print("FAIL:", f)
@@ -156,7 +219,7 @@ def report(failures):
 
 
 def main(argv):
-    if len(argv) != 3 or argv[1] not in ("series", "analysis", "errors"):
+    if len(argv) != 3 or argv[1] not in ("series", "analysis", "errors", "particles"):
         print(__doc__, file=sys.stderr)
         return 2
     try:
@@ -168,7 +231,7 @@ def main(argv):
     work = os.path.abspath(argv[2])
     os.makedirs(work, exist_ok=True)
     return {"series": check_series, "analysis": check_analysis,
-            "errors": check_errors}[argv[1]](work)
+            "errors": check_errors, "particles": check_particles}[argv[1]](work)
 
 
 if __name__ == "__main__":
