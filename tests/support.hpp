@@ -55,6 +55,13 @@ struct ScratchDir {
     ScratchDir& operator=(const ScratchDir&) = delete;
 };
 
+/// `s` with every `from` replaced by `to`.
+inline std::string replaceAll(std::string s, const std::string& from, const std::string& to) {
+    for (std::size_t at = s.find(from); at != std::string::npos; at = s.find(from, at + to.size()))
+        s.replace(at, from.size(), to);
+    return s;
+}
+
 inline void writeText(const std::filesystem::path& path, const std::string& text) {
     std::ofstream out(path);
     out << text;

@@ -46,7 +46,8 @@ void fluidLoop(model::ParticleStore& s, const Drag& drag, const Method& method,
     for (std::size_t i = 0; i < s.size(); ++i) {
         const Vec2 pos{s.x[i], s.y[i]};
         fluid::FluidSample f;
-        if constexpr (std::is_same_v<Method, fluid::CellMesh> || std::is_same_v<Method, fluid::BilinearGrid>) {
+        if constexpr (std::is_same_v<Method, fluid::CellMesh> ||
+                      std::is_same_v<Method, fluid::BilinearGrid>) {
             if (patches[i].interior(pos))
                 f.u = patches[i].velocity(pos);  // still in its cell: no field memory touched
             else
@@ -87,7 +88,7 @@ void addFluidForces(model::ParticleStore& s, const fluid::FieldSeries& field, co
         Real rmax = 0;
         for (const Real r : s.radius) rmax = std::max(rmax, r);
         const Real depth = c.depth > 0 ? c.depth : 2 * rmax;
-        const Real h = c.voidageCell > 0 ? c.voidageCell : std::max(field.first().spacing(), 2 * rmax);
+        const Real h = c.voidageCell > 0 ? c.voidageCell : std::max(field.first().spacing(), 8 * rmax);
         eps.resize(s.size());
         voidages(s, h, depth, scratch, eps);
         voidage = &eps;
@@ -100,8 +101,9 @@ void addFluidForces(model::ParticleStore& s, const fluid::FieldSeries& field, co
     fluid::LocalPatch* patches = scratch.patches.data();
     std::visit(
         [&](const auto& drag) {
-            field.first().visit(
-                [&](const auto& method) { fluidLoop(s, drag, method, field, c, g, voidage, patches, stats); });
+            field.first().visit([&](const auto& method) {
+                fluidLoop(s, drag, method, field, c, g, voidage, patches, stats);
+            });
         },
         c.drag);
 }

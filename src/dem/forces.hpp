@@ -42,7 +42,7 @@ struct BodyForces {
     Real gamma = 0;          ///< [kg/s] global viscous damping F = -gamma v
     Real gammaRotation = 0;  ///< [kg m^2/s] torque = -gammaRotation omega
     const std::vector<PullSpring>* springs = nullptr;
-    Real time = 0;  ///< [s] of the evaluation (spring motion)
+    Real time = 0;                 ///< [s] of the evaluation (spring motion)
     bool weight = true;            ///< apply m g (cfddem #Fg)
     bool particleContacts = true;  ///< evaluate particle pairs (cfddem #FP)
     bool wallContacts = true;      ///< evaluate particle-wall pairs (cfddem #FB)

@@ -59,7 +59,8 @@ WorldConfig makeWorldConfig(const model::SceneDef& scene, Real maxRadius);
 /// The world at t = 0 (call initialize() before stepping, or loadState()). `fields`: where the
 /// flow fields of [fluid] come from (the app builds it from the field files; ignored without
 /// [fluid]; an empty loader means the uniform fluid.velocity).
-World makeWorld(const model::SceneDef& scene, const InitialParticles& initial, fluid::FieldSource fields = {});
+World makeWorld(const model::SceneDef& scene, const InitialParticles& initial,
+                fluid::FieldSource fields = {});
 
 /// The fluid-force parameters of [fluid] (cfddem spec 5).
 FluidForceConfig fluidForceConfig(const model::FluidDef& def);

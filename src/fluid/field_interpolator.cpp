@@ -106,7 +106,8 @@ void BilinearGrid::sample(Vec2 pos, FluidSample& out, LocalPatch& patch) const n
     const std::size_t k11 = i + nx * j, k21 = k11 + 1, k12 = k11 + nx, k22 = k12 + 1;
     LocalPatch cell;
     cell.kind = LocalPatch::kRectangle;
-    const Real c[12] = {x1, x2, y1, y2, ux[k11], uy[k11], ux[k21], uy[k21], ux[k12], uy[k12], ux[k22], uy[k22]};
+    const Real c[12] = {x1,      x2,      y1,      y2,      ux[k11], uy[k11],
+                        ux[k21], uy[k21], ux[k12], uy[k12], ux[k22], uy[k22]};
     std::copy(c, c + 12, cell.c);
     // cfddem Eq. 3.66-3.68: along x on the rows y1 and y2, then along y (LocalPatch::velocity).
     out.u = cell.velocity(pos);
@@ -163,8 +164,8 @@ bool CellMesh::inTriangle(std::size_t t, Vec2 pos, FluidSample& out, LocalPatch&
     out.inside = true;
     // The triangle's linear interpolant, built the same way whoever asks (LocalPatch).
     patch.kind = LocalPatch::kTriangle;
-    const Real c[12] = {n0.x,         n0.y,         e2.y / det,   -e2.x / det,  -e1.y / det,  e1.x / det,
-                        n0.ux,        n0.uy,        n1.ux - n0.ux, n1.uy - n0.uy, n2.ux - n0.ux, n2.uy - n0.uy};
+    const Real c[12] = {n0.x,  n0.y,  e2.y / det,    -e2.x / det,   -e1.y / det,   e1.x / det,
+                        n0.ux, n0.uy, n1.ux - n0.ux, n1.uy - n0.uy, n2.ux - n0.ux, n2.uy - n0.uy};
     std::copy(c, c + 12, patch.c);
     out.u = patch.velocity(pos);
     out.p = p.empty() ? 0 : l0 * p[k[0]] + l1 * p[k[1]] + l2 * p[k[2]];
@@ -262,7 +263,8 @@ CellMesh makeCells(FlowField& f, const InterpolatorOptions& o, Vec2 lo, Vec2 hi)
     m.nx = static_cast<std::int64_t>(std::floor(w / m.bin)) + 1;
     m.ny = static_cast<std::int64_t>(std::floor(h / m.bin)) + 1;
     const auto clampBin = [](Real v, std::int64_t n) {
-        return v <= 0 ? std::int64_t{0} : (v >= static_cast<Real>(n - 1) ? n - 1 : static_cast<std::int64_t>(v));
+        return v <= 0 ? std::int64_t{0}
+                      : (v >= static_cast<Real>(n - 1) ? n - 1 : static_cast<std::int64_t>(v));
     };
     const auto binOf = [&](Real x, Real y) {
         return static_cast<std::uint32_t>(clampBin(std::floor((x - lo.x) / m.bin), m.nx) +
@@ -355,7 +357,11 @@ CellMesh makeCells(FlowField& f, const InterpolatorOptions& o, Vec2 lo, Vec2 hi)
 }  // namespace
 
 FieldInterpolator::FieldInterpolator(Vec2 velocity)
-    : m_method(UniformFlow{velocity}), m_source("uniform"), m_lo{-1e300, -1e300}, m_hi{1e300, 1e300} {}
+    : m_method(UniformFlow{velocity}),
+      m_source("uniform"),
+      m_spacing(0),
+      m_lo{-1e300, -1e300},
+      m_hi{1e300, 1e300} {}
 
 FieldInterpolator::FieldInterpolator(FlowField f, const InterpolatorOptions& o) {
     const std::size_t n = f.size();
@@ -397,6 +403,7 @@ FieldInterpolator::FieldInterpolator(FlowField f, const InterpolatorOptions& o) 
 }
 
 Vec2 FieldInterpolator::pressureGradient(Vec2 pos) const noexcept {
+    if (m_spacing <= 0) return {};  // a uniform flow carries no pressure
     const Real d = 0.25 * m_spacing;
     Vec2 grad;
     for (int axis = 0; axis < 2; ++axis) {
@@ -441,8 +448,8 @@ std::size_t FieldInterpolator::memoryBytes() const noexcept {
                        m.index.memoryBytes();
             } else {
                 return m.nodes.capacity() * sizeof(CellMesh::Node) + bytes(m.p) + m.tri.capacity() * 4 +
-                       m.binStart.capacity() * 4 + m.binTris.capacity() * 4 + bytes(m.nodeX) + bytes(m.nodeY) +
-                       m.nearestIndex.memoryBytes();
+                       m.binStart.capacity() * 4 + m.binTris.capacity() * 4 + bytes(m.nodeX) +
+                       bytes(m.nodeY) + m.nearestIndex.memoryBytes();
             }
         },
         m_method);

@@ -179,7 +179,7 @@ public:
     const std::string& source() const noexcept { return m_source; }
     Real time() const noexcept { return m_time; }
     Real depth() const noexcept { return m_depth; }
-    Real spacing() const noexcept { return m_spacing; }  ///< [m] typical node spacing
+    Real spacing() const noexcept { return m_spacing; }  ///< [m] typical node spacing (0: uniform flow)
     Vec2 lo() const noexcept { return m_lo; }            ///< [m] bounding box of the nodes
     Vec2 hi() const noexcept { return m_hi; }
     std::size_t nodes() const noexcept { return m_nodes; }

@@ -117,7 +117,14 @@ OpenedFields openFlowFields(const model::SceneDef& scene, Diagnostics& diags) {
             }
         out.timing = "file";
     }
-    if (paths0 != entries.front().path) out.first.reset();  // sorted by time: the t = 0 field is another
+    if (paths0 != entries.front().path) {  // sorted by time: the field of t = 0 is another one
+        try {
+            out.first = std::make_shared<const fluid::FieldInterpolator>(
+                readFlowField(entries.front().path, read), out.source.options);
+        } catch (const std::exception& ex) {  // it was read without error a moment ago
+            diags.error(entries.front().loc, "fluid.fields", ex.what());
+        }
+    }
     std::vector<std::string> paths;
     for (const Entry& e : entries) {
         out.source.times.push_back(e.time);

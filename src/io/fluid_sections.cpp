@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include "fluid/drag_laws.hpp"
+
 namespace granulab::io {
 
 namespace {
@@ -53,7 +55,7 @@ void readFluid(TableReader& r, model::FluidDef& f) {
     r.vec2("velocity", f.velocity);
     r.number("density", f.density);
     r.number("viscosity", f.viscosity);
-    r.choice("drag", f.drag, {"none", "quadratic", "stokes", "schiller_naumann", "di_felice"});
+    r.choice("drag", f.drag, fluid::dragKeywords());
     r.number("cw", f.cw);
     r.boolean("buoyancy", f.buoyancy);
     r.boolean("pressure_gradient", f.pressureGradient);

@@ -74,6 +74,11 @@ void checkEdmdDef(const model::SceneDef& sc, Diagnostics& d) {
         d.error(sc.output.loc, "output.analyses",
                 "is for dem runs; an edmd run writes its gas analyses at every snapshot with "
                 "edmd.analysis_files = true");
+    if (sc.output.particleSeries)
+        d.error(
+            sc.output.loc, "output.particle_series",
+            "is for dem runs (the cfddem seed's per-particle CSV series); an edmd run writes its particles "
+            "in the snapshots and final.csv");
     // The box / count / volume-fraction triangle: exactly two of the three.
     const int given = (!e.box.empty() ? 1 : 0) + (e.count > 0 ? 1 : 0) + (e.volumeFraction > 0 ? 1 : 0);
     if (e.count < 0) d.error(loc, "edmd.count", fmt::format("must be > 0, got {}", e.count));

@@ -38,9 +38,10 @@ struct FluidDef {
     bool buoyancy = true;                ///< static buoyancy -rho_f V g (cfddem Eq. 3.63)
     bool pressureGradient = false;       ///< -V grad p from the field's pressure
     std::string pressure =
-        "kinematic";       ///< kinematic (p/rho_f [m^2/s^2], incompressible OpenFOAM) | static [Pa]
-    Real depth = 0;        ///< [m] di_felice: slab thickness for the voidage (0: the largest diameter)
-    Real voidageCell = 0;  ///< [m] di_felice: edge of the voidage cells (0: the field's node spacing)
+        "kinematic";  ///< kinematic (p/rho_f [m^2/s^2], incompressible OpenFOAM) | static [Pa]
+    Real depth = 0;   ///< [m] di_felice: slab thickness for the voidage (0: the largest diameter)
+    Real voidageCell =
+        0;  ///< [m] di_felice: edge of the voidage cells (0: max(node spacing, 4 largest diameters))
     Real checkMargin = 0;  ///< [m] how far initial particles and inlets may lie outside the field
     SourceLoc loc;
 };

@@ -59,13 +59,60 @@ void checkCoverage(const model::SceneDef& scene, const fluid::FieldInterpolator&
     }
 }
 
+/// The drag relaxes a particle's velocity to the fluid's in tau = m / (6 pi mu R) (Stokes; faster at
+/// higher Re): explicit integration is unstable above dt = 2 tau and inaccurate well before. An
+/// error above tau (well inside the unstable side of the accurate range), a warning above tau / 10.
+void checkDragTimeStep(const model::SceneDef& scene, dem::PreparedScene& prepared, Diagnostics& diags) {
+    const model::FluidDef& def = scene.fluid;
+    if (def.drag != "stokes" && def.drag != "schiller_naumann" && def.drag != "di_felice") return;
+    std::vector<Real> density(scene.materials.size(), 0);
+    for (std::size_t m = 0; m < scene.materials.size(); ++m) density[m] = scene.materials[m].density;
+    Real tau = 1e300, radius = 0;
+    const auto consider = [&](Real r, Real rho) {
+        const Real t = (4.0 / 3.0 * kPi * r * r * r * rho) / (6 * kPi * def.viscosity * r);
+        if (t < tau) {
+            tau = t;
+            radius = r;
+        }
+    };
+    for (const auto& p : prepared.initial.particles)
+        if (p.material < density.size()) consider(p.radius, density[p.material]);
+    for (const auto* ins : scene.machines.inserts()) {
+        Real rho = 0;
+        for (const auto& m : scene.materials)
+            if (m.name == ins->material) rho = m.density;
+        const auto& r = ins->radius;
+        const Real rmin = r.kind == model::SizeDistDef::Kind::Constant ? r.value : r.min;
+        if (rmin > 0) consider(rmin, rho);
+    }
+    if (tau >= 1e300) return;
+    const Real dt = scene.dem.dt;
+    const std::string what = fmt::format(
+        "the drag relaxes the velocity of the smallest particle (R = {:.4g} m) in tau = m / (6 pi mu R) = "
+        "{:.4g} s",
+        radius, tau);
+    if (dt > tau)
+        diags.error(
+            scene.dem.loc, "dem.dt",
+            fmt::format("dt = {:.4g} s is above the drag's relaxation time: {}; explicit steps are unstable "
+                        "above 2 tau; allowed (0, {:.4g}], advised {:.4g} s",
+                        dt, what, tau, tau / 20));
+    else if (dt > tau / 10)
+        prepared.warnings.push_back(
+            fmt::format("dem.dt = {:.4g} s is more than a tenth of the drag's relaxation time ({}); the "
+                        "velocity lags the exact "
+                        "solution by ~dt / (2 tau) = {:.2g} %; {:.4g} s or less is advised",
+                        dt, what, 50 * dt / tau, tau / 20));
+}
+
 }  // namespace
 
 void prepareDemFluid(const model::SceneDef& scene, io::OpenedFields fields, dem::PreparedScene& prepared,
                      Diagnostics& diags) {
     if (scene.attraction.present && scene.attraction.cutoff <= 0) {
-        const bool growing = !scene.machines.sources.empty() || !scene.machines.inlets.empty() ||
-                             !scene.machines.boundaries.empty();
+        bool growing = !scene.machines.sources.empty() || !scene.machines.inlets.empty();
+        for (const auto& b : scene.machines.boundaries)
+            for (const auto& e : b.edges) growing = growing || e.type == "inlet";
         if (prepared.initial.particles.size() > kAllPairsAttractionLimit || growing)
             diags.error(
                 scene.attraction.loc, "attraction.cutoff",
@@ -76,6 +123,7 @@ void prepareDemFluid(const model::SceneDef& scene, io::OpenedFields fields, dem:
     }
     if (!scene.fluid.present) return;
     if (fields.first) checkCoverage(scene, *fields.first, prepared, diags);
+    checkDragTimeStep(scene, prepared, diags);
     if (fields.source.load)
         prepared.fieldsNote = fmt::format(
             "{} field file{} ({} times{}), {} interpolation on {} nodes", fields.files.size(),
