@@ -4,8 +4,8 @@
 // with their own times is read file by file, each once; a run resumed between two fields is
 // bit-identical to the uninterrupted one (lazy loading and the per-particle cell interpolants keep
 // no history that a checkpoint would miss).
-#include <gtest/gtest.h>
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 
 #include <filesystem>
 #include <string>
@@ -35,7 +35,8 @@ std::string quadField(Real scale, Real time, const std::string& name = "U", cons
     s += fmt::format("POINT_DATA 36\nVECTORS {} double\n", name);
     if (!u.empty()) return s + u;
     for (int j = 0; j < 6; ++j)
-        for (int i = 0; i < 6; ++i) s += fmt::format("{} {} 0\n", scale * 2 * (0.2 * j - 0.5), scale * (1 + 0.2 * i));
+        for (int i = 0; i < 6; ++i)
+            s += fmt::format("{} {} 0\n", scale * 2 * (0.2 * j - 0.5), scale * (1 + 0.2 * i));
     return s;
 }
 
@@ -91,7 +92,8 @@ TEST(Cli, FluidFieldProblemsExitWithStatusTwoNamingFileAndArray) {
     test::writeText(dir / "nan.vtk", nan);
     const std::string good = quadField(1, 0);
     test::writeText(dir / "cut.vtk", good.substr(0, good.size() / 2));
-    test::writeText(dir / "jitter.vtk", test::replaceAll(good, "\n0.2 0.2 0\n", "\n0.21 0.2 0\n"));  // no tensor grid
+    test::writeText(dir / "jitter.vtk",
+                    test::replaceAll(good, "\n0.2 0.2 0\n", "\n0.21 0.2 0\n"));  // no tensor grid
     struct Case {
         std::string name, scene;
         std::vector<std::string> expect;
@@ -101,20 +103,28 @@ TEST(Cli, FluidFieldProblemsExitWithStatusTwoNamingFileAndArray) {
         {"nan", dropletScene("\"nan.vtk\""), {"nan.vtk", "U"}},
         {"truncated", dropletScene("\"cut.vtk\""), {"cut.vtk"}},
         {"missing", dropletScene("\"nowhere.vtk\""), {"nowhere.vtk", "fluid.fields"}},
-        {"bilinear_on_cells", dropletScene("\"jitter.vtk\"", "interpolation = \"bilinear\""), {"jitter.vtk", "tensor grid"}},
-        {"outside", test::replaceAll(dropletScene("\"good.vtk\""), "region = [0.1, 0.1, 0.9, 0.9]", "region = [0.5, 0.5, 1.4, 0.9]"),
+        {"bilinear_on_cells",
+         dropletScene("\"jitter.vtk\"", "interpolation = \"bilinear\""),
+         {"jitter.vtk", "tensor grid"}},
+        {"outside",
+         test::replaceAll(dropletScene("\"good.vtk\""), "region = [0.1, 0.1, 0.9, 0.9]",
+                          "region = [0.5, 0.5, 1.4, 0.9]"),
          {"outside the flow field", "good.vtk"}},
-        {"disk_mass_model", test::replaceAll(dropletScene("\"good.vtk\""), "mass_model = \"sphere\"", "mass_model = \"disk\""),
+        {"disk_mass_model",
+         test::replaceAll(dropletScene("\"good.vtk\""), "mass_model = \"sphere\"", "mass_model = \"disk\""),
          {"dem.mass_model = \"sphere\""}},
-        {"time_step", test::replaceAll(dropletScene("\"good.vtk\"", "viscosity = 1000.0"), "viscosity = 1.8e-5\n", ""),
+        {"time_step",
+         test::replaceAll(dropletScene("\"good.vtk\"", "viscosity = 1000.0"), "viscosity = 1.8e-5\n", ""),
          {"relaxation time", "dem.dt"}},
     };
     for (const auto& c : cases) {
         test::writeText(dir / (c.name + ".toml"), c.scene);
-        const auto r = test::runGranulab(fmt::format("run {}.toml --quiet --out out_{}", c.name, c.name), dir);
+        const auto r =
+            test::runGranulab(fmt::format("run {}.toml --quiet --out out_{}", c.name, c.name), dir);
         EXPECT_EQ(r.status, 2) << c.name << "\n" << r.output;
         for (const auto& e : c.expect)
-            EXPECT_NE(r.output.find(e), std::string::npos) << c.name << ": missing '" << e << "' in:\n" << r.output;
+            EXPECT_NE(r.output.find(e), std::string::npos) << c.name << ": missing '" << e << "' in:\n"
+                                                           << r.output;
     }
 }
 
@@ -123,7 +133,8 @@ TEST(Cli, FluidSeriesIsReadFileByFileAndResumesBitForBit) {
     const auto& dir = scratch.path;
     std::filesystem::create_directories(dir / "cfd");
     for (int k = 0; k < 3; ++k)  // times 0, 0.01, 0.02 s; names that sort differently as text
-        test::writeText(dir / fmt::format("cfd/case_{}.vtk", k == 2 ? 10 : k), quadField(1 + 0.5 * k, 0.01 * k));
+        test::writeText(dir / fmt::format("cfd/case_{}.vtk", k == 2 ? 10 : k),
+                        quadField(1 + 0.5 * k, 0.01 * k));
     test::writeText(dir / "drops.toml", dropletScene("\"cfd\"", "time_interpolation = true"));
     const std::string common = " --quiet --set output.checkpoint_interval=0.005";
     const auto run = [&](const std::string& args) {
