@@ -23,6 +23,8 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 root=$(cd "$here/../.." && pwd)
 
 die() { echo "run.sh: error: $*" >&2; exit 1; }
+# shellcheck source=../openfoam_case.sh
+. "$here/../openfoam_case.sh"
 usage() { sed -n '2,19p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
 
 cells=8
@@ -52,34 +54,15 @@ out=$(realpath -m -- "$out")
 # Time step: the largest of a list of values that divide the write interval (0.05 s) exactly,
 # with dt <= 0.5 dx/4.5 m/s (OpenFOAM's Courant number adds |Ux|/dx and |Uy|/dy; the fastest
 # air beside the obstacle is 3.4 m/s). N = 8: 0.00125 s, N = 4: 0.0025 s.
-dt=$(awk -v n="$cells" 'BEGIN { lim = 0.5 * (0.1 / n) / 4.5;
-    split("0.025 0.0125 0.01 0.005 0.0025 0.002 0.00125 0.001 0.0005 0.00025 0.0002 0.000125 0.0001 0.00005", c, " ");
-    for (i = 1; i in c; i++) if (c[i] + 0 <= lim) { print c[i]; exit } print 0.00005 }')
+dt=$(of_time_step "$(awk -v n="$cells" 'BEGIN { print 0.5 * (0.1 / n) / 4.5 }')" \
+    "0.025 0.0125 0.01 0.005 0.0025 0.002 0.00125 0.001 0.0005 0.00025 0.0002 0.000125 0.0001 0.00005")
 
-# (a) OpenFOAM environment. An environment the user sourced already is kept.
-if ! { [ -n "${WM_PROJECT_DIR:-}" ] && command -v icoFoam >/dev/null 2>&1; }; then
-    if [ -f /usr/share/openfoam/etc/bashrc ]; then
-        export WM_PROJECT_DIR=/usr/share/openfoam
-        # Debian's bashrc complains about missing helper scripts (bin/foamEtcFile); harmless.
-        set +eu
-        # shellcheck disable=SC1091
-        . /usr/share/openfoam/etc/bashrc >/dev/null 2>&1
-        set -eu
-    fi
-fi
-for tool in blockMesh icoFoam foamToVTK postProcess; do
-    command -v "$tool" >/dev/null 2>&1 ||
-        die "OpenFOAM's $tool was not found: install the Debian package openfoam (sudo apt-get install openfoam), or source your OpenFOAM's etc/bashrc first"
-done
-[ -n "${WM_PROJECT_DIR:-}" ] || die "WM_PROJECT_DIR is not set: install the Debian package openfoam, or source your OpenFOAM's etc/bashrc first"
+# (a) OpenFOAM environment
+of_environment blockMesh icoFoam foamToVTK postProcess
 
 # (b) a fresh copy of the case
 case_dir="$out/case"
-mkdir -p "$out"
-rm -rf "$case_dir"
-cp -r "$here/case" "$case_dir"
-rm -rf "$case_dir"/[1-9]* "$case_dir"/0.[0-9]* "$case_dir/constant/polyMesh" "$case_dir/VTK" \
-    "$case_dir/postProcessing" "$case_dir"/log.*   # leftovers of a run inside examples/
+of_fresh_case "$here/case" "$case_dir"
 cat > "$case_dir/system/caseParameters" <<EOF
 /*--------------------------------*- C++ -*----------------------------------*\\
   written by examples/channel/run.sh --cells $cells
@@ -102,24 +85,8 @@ ny0         $((2 * cells));     // 2n: cells in y over [0, 0.2] and over [0.3, 0
 // ************************************************************************* //
 EOF
 
-now() { date +%s.%N; }
 timings="$out/timings.txt"
 echo "# step seconds (cells per obstacle side = $cells, deltaT = $dt s)" > "$timings"
-step() {  # step NAME COMMAND...: run in the case folder, log to log.NAME, time it
-    local name=$1; shift
-    local t0 t1
-    t0=$(now)
-    if ! (cd "$case_dir" && "$@") > "$case_dir/log.$name" 2>&1; then
-        echo "run.sh: error: $name failed; the end of $case_dir/log.$name:" >&2
-        tail -n 20 "$case_dir/log.$name" >&2
-        exit 1
-    fi
-    t1=$(now)
-    local s
-    s=$(awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.2f", b - a }')
-    echo "$name $s" >> "$timings"
-    echo "  $name: $s s (log: $case_dir/log.$name)"
-}
 
 # (c) mesh, flow, conversion to VTK
 ncells=$((20 * cells * 5 * cells - cells * cells))

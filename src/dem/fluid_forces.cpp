@@ -10,20 +10,29 @@ namespace granulab::dem {
 
 namespace {
 
-constexpr Real kMinVoidage = 0.1;  ///< floor of the voidage (Di Felice's factor diverges at 0)
+constexpr Real kMinVoidage = 0.1;
+
+struct Bounds {
+    Real x0, y0, x1, y1;  ///< [m]
+};
+/// Bounding box of the particle centres (at least one particle).
+Bounds centreBounds(const model::ParticleStore& s) noexcept {
+    Bounds b{s.x[0], s.y[0], s.x[0], s.y[0]};
+    for (std::size_t i = 1; i < s.size(); ++i) {
+        b.x0 = std::min(b.x0, s.x[i]);
+        b.x1 = std::max(b.x1, s.x[i]);
+        b.y0 = std::min(b.y0, s.y[i]);
+        b.y1 = std::max(b.y1, s.y[i]);
+    }
+    return b;
+}  ///< floor of the voidage (Di Felice's factor diverges at 0)
 
 /// Voidage at each particle from the particle volume per square cell of edge h in a slab of
 /// thickness `depth`: eps = 1 - V_solid / (h^2 depth), at least kMinVoidage.
 void voidages(const model::ParticleStore& s, Real h, Real depth, VoidageScratch& scratch,
               std::vector<Real>& out) noexcept {
     const std::size_t n = s.size();
-    Real x0 = s.x[0], y0 = s.y[0], x1 = x0, y1 = y0;
-    for (std::size_t i = 1; i < n; ++i) {
-        x0 = std::min(x0, s.x[i]);
-        x1 = std::max(x1, s.x[i]);
-        y0 = std::min(y0, s.y[i]);
-        y1 = std::max(y1, s.y[i]);
-    }
+    const auto [x0, y0, x1, y1] = centreBounds(s);
     const auto nx = static_cast<std::size_t>((x1 - x0) / h) + 1,
                ny = static_cast<std::size_t>((y1 - y0) / h) + 1;
     const auto cellOf = [&](std::size_t i) {
@@ -94,9 +103,13 @@ void addFluidForces(model::ParticleStore& s, const fluid::FieldSeries& field, co
         voidage = &eps;
         stats.minVoidage = *std::min_element(eps.begin(), eps.end());
     }
-    if (scratch.patchesField != &field.first() || scratch.patches.size() != s.size()) {
-        scratch.patches.assign(s.size(), fluid::LocalPatch{});  // a new field, or particles in or out
-        scratch.patchesField = &field.first();
+    // A patch is the interpolant of a cell, valid for whichever particle is inside it: slots
+    // renumbered by re-sorting, insertion or removal keep theirs; a new field invalidates all.
+    if (scratch.patchesGeneration != field.generation()) {
+        scratch.patches.assign(s.size(), fluid::LocalPatch{});
+        scratch.patchesGeneration = field.generation();
+    } else if (scratch.patches.size() != s.size()) {
+        scratch.patches.resize(s.size());
     }
     fluid::LocalPatch* patches = scratch.patches.data();
     std::visit(
@@ -130,13 +143,7 @@ void addAttraction(model::ParticleStore& s, Real constant, Real cutoff,
     }
     if (n < 2) return;
     // Cell grid of edge `cutoff`: pairs in the same and the 4 forward neighbour cells.
-    Real x0 = s.x[0], y0 = s.y[0], x1 = x0, y1 = y0;
-    for (std::size_t i = 1; i < n; ++i) {
-        x0 = std::min(x0, s.x[i]);
-        x1 = std::max(x1, s.x[i]);
-        y0 = std::min(y0, s.y[i]);
-        y1 = std::max(y1, s.y[i]);
-    }
+    const auto [x0, y0, x1, y1] = centreBounds(s);
     const auto nx = static_cast<std::int64_t>((x1 - x0) / cutoff) + 1;
     const auto ny = static_cast<std::int64_t>((y1 - y0) / cutoff) + 1;
     // A sparse layout would be needed for particles spread over many cutoffs; cap the grid and fall

@@ -36,10 +36,10 @@ struct FluidStats {
 /// interpolant of the cell each particle slot was in (fluid::LocalPatch; a patch is valid for any
 /// particle inside its cell, so slots renumbered since only cost a lookup).
 struct VoidageScratch {
-    std::vector<Real> solid;                 ///< [m^3] particle volume per cell
-    std::vector<Real> eps;                   ///< voidage at each particle
-    std::vector<fluid::LocalPatch> patches;  ///< by slot, of the current field
-    const void* patchesField = nullptr;      ///< the field the patches belong to
+    std::vector<Real> solid;                  ///< [m^3] particle volume per cell
+    std::vector<Real> eps;                    ///< voidage at each particle
+    std::vector<fluid::LocalPatch> patches;   ///< by slot, of the current field
+    std::uint64_t patchesGeneration = ~0ull;  ///< FieldSeries::generation() the patches belong to
 };
 
 /// Adds the fluid forces to s.fx, s.fy (torques: none, spec 5.1). `g` [m/s^2] the gravity of the

@@ -46,6 +46,7 @@ void FieldSeries::update(Real t) {
             m_a = loadField(k);
         }
         m_index = k;
+        ++m_generation;
     }
     m_weight = 0;
     const auto& ts = m_source.times;

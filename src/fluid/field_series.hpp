@@ -6,6 +6,7 @@
 // first time the first field applies, after the last the last one.
 #pragma once
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -47,6 +48,8 @@ public:
     Vec2 pressureGradient(Vec2 pos) const noexcept;
 
     std::size_t currentIndex() const noexcept { return m_index; }
+    /// Changes whenever the current field (first()) is replaced: caches of its cells are stale then.
+    std::uint64_t generation() const noexcept { return m_generation; }
     std::size_t count() const noexcept { return m_source.count(); }
     std::size_t loads() const noexcept { return m_loads; }  ///< files read since construction
     const FieldSource& source() const noexcept { return m_source; }
@@ -64,6 +67,7 @@ private:
     std::size_t m_indexB = static_cast<std::size_t>(-1);
     Real m_weight = 0;
     std::size_t m_loads = 0;
+    std::uint64_t m_generation = 0;
 };
 
 }  // namespace granulab::fluid

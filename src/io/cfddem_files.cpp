@@ -16,6 +16,7 @@
 #include <system_error>
 
 #include "core/suggest.hpp"
+#include "core/utf8.hpp"
 
 namespace granulab::io {
 
@@ -218,21 +219,7 @@ TrioFile readTrioFile(const fs::path& path, const std::string& name, const std::
 /// `s` as UTF-8: unchanged when it is valid UTF-8, else read as Latin-1 (the seed's info lines were
 /// written on Windows).
 std::string asUtf8(const std::string& s) {
-    std::size_t k = 0;
-    bool valid = true;
-    while (valid && k < s.size()) {
-        const auto c = static_cast<unsigned char>(s[k]);
-        const std::size_t n = c < 0x80           ? 1
-                              : (c >> 5) == 0x6  ? 2
-                              : (c >> 4) == 0xE  ? 3
-                              : (c >> 3) == 0x1E ? 4
-                                                 : 0;
-        valid = n > 0 && k + n <= s.size();
-        for (std::size_t j = 1; valid && j < n; ++j)
-            valid = (static_cast<unsigned char>(s[k + j]) >> 6) == 0x2;
-        k += n;
-    }
-    if (valid) return s;
+    if (isUtf8(s)) return s;
     std::string out;
     for (const char ch : s) {
         const auto c = static_cast<unsigned char>(ch);

@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "core/utf8.hpp"
+
 namespace granulab::io {
 
 namespace fs = std::filesystem;
@@ -21,18 +23,8 @@ std::string tomlNumber(double v) {
 }
 
 std::string tomlString(const std::string& s) {
-    for (std::size_t k = 0; k < s.size();) {  // TOML text is UTF-8
-        const auto c = static_cast<unsigned char>(s[k]);
-        const std::size_t n = c < 0x80           ? 1
-                              : (c >> 5) == 0x6  ? 2
-                              : (c >> 4) == 0xE  ? 3
-                              : (c >> 3) == 0x1E ? 4
-                                                 : 0;
-        bool ok = n > 0 && k + n <= s.size();
-        for (std::size_t j = 1; ok && j < n; ++j) ok = (static_cast<unsigned char>(s[k + j]) >> 6) == 0x2;
-        if (!ok) throw std::invalid_argument(fmt::format("'{}' is not UTF-8 text, which TOML needs", s));
-        k += n;
-    }
+    if (!isUtf8(s))  // TOML text is UTF-8
+        throw std::invalid_argument(fmt::format("'{}' is not UTF-8 text, which TOML needs", s));
     std::string out = "\"";
     for (const char c : s) {
         switch (c) {

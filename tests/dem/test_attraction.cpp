@@ -106,8 +106,8 @@ material = "m"
         EXPECT_EQ(off.store().vx[i], id == 0 ? 1.0 : -1.0);
         EXPECT_NEAR(off.store().vy[i], -1.0 - 9.81 * 0.02, 1e-9);
     }
-    const dem::World on = run(test::replaceAll(
-        test::replaceAll(scene, "particle_contacts = false", ""), "wall_contacts = false", ""));
+    const dem::World on = run(test::replaceAll(test::replaceAll(scene, "particle_contacts = false", ""),
+                                               "wall_contacts = false", ""));
     for (std::size_t i = 0; i < 2; ++i) EXPECT_GT(on.store().vy[i], 0);  // bounced off the floor
 }
 

@@ -67,6 +67,9 @@ int demInfo(const std::string& scenePath, const model::SceneDef& scene) {
     else
         fmt::print("particles    {} ({} polygons, {} {}), {} shapes\n", ps.size(), polygons,
                    ps.size() - polygons, kind, v.initial.shapes.size());
+    if (scene.fluid.present)
+        fmt::print("fluid        rho_f = {:.6g} kg/m^3, drag {}{}; {}\n", scene.fluid.density,
+                   scene.fluid.drag, scene.fluid.buoyancy ? ", buoyancy" : "", v.fieldsNote);
     for (std::size_t m = 0; m < names.size(); ++m) {
         std::size_t count = 0;
         Real rmin = 1e300, rmax = 0, mass = 0;
