@@ -67,6 +67,11 @@ OpenedFields openFlowFields(const model::SceneDef& scene, Diagnostics& diags) {
     // field is in memory at a time; the run loads them again when they are due.
     for (std::size_t k = 0; k < entries.size(); ++k) {
         Entry& e = entries[k];
+        if (k > 0 && def.check == "first" && !std::isnan(e.time)) {  // read when due (fluid.check)
+            if (!std::filesystem::is_regular_file(e.path))
+                diags.error(e.loc, "fluid.fields", fmt::format("{}: no such file", e.path));
+            continue;
+        }
         try {
             fluid::FlowField f = readFlowField(e.path, read);
             if (std::isnan(e.time)) e.time = f.time;

@@ -43,6 +43,7 @@ void readFluid(TableReader& r, model::FluidDef& f) {
     readFieldList(r, f);
     r.choice("timing", f.timing, {"auto", "even", "file"});
     r.boolean("time_interpolation", f.timeInterpolation);
+    r.choice("check", f.check, {"all", "first"});
     r.string("velocity_array", f.velocityArray);
     r.string("pressure_array", f.pressureArray);
     r.choice("data", f.data, {"auto", "point", "cell"});

@@ -23,6 +23,10 @@ struct FluidDef {
     /// evenly over run.end_time) or "file" (the files' times; an error if they carry none)
     std::string timing = "auto";
     bool timeInterpolation = false;  ///< linear in time between neighbouring fields
+    /// "all": every file is read once at set-up to check it (bad input: exit status 2 before the
+    /// run); "first": only the first (and those without a known time), the others when they are
+    /// due (a bad one stops the run with exit status 3, the last checkpoint kept)
+    std::string check = "all";
     std::string velocityArray = "U";
     std::string pressureArray = "p";
     std::string data = "auto";           ///< auto (point data, else cell data) | point | cell

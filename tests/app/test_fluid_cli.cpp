@@ -154,5 +154,31 @@ TEST(Cli, FluidSeriesIsReadFileByFileAndResumesBitForBit) {
     EXPECT_NE(summary.find("3 field files (file times, linear in time)"), std::string::npos) << summary;
 }
 
+TEST(Cli, FluidBadLaterFieldStopsBeforeOrWhenDue) {
+    // A series whose third field is cut: fluid.check = "all" refuses the scene (exit 2); "first"
+    // starts, and stops with exit 3 naming the file when that field is due, the checkpoint kept.
+    const test::ScratchDir scratch;
+    const auto& dir = scratch.path;
+    std::filesystem::create_directories(dir / "cfd");
+    test::writeText(dir / "cfd/a_0.vtk", quadField(1, 0));
+    test::writeText(dir / "cfd/a_1.vtk", quadField(1, 0.01));
+    const std::string cut = quadField(1, 0.02);
+    test::writeText(dir / "cfd/a_2.vtk", cut.substr(0, cut.size() - 200));
+    // The times come from a .series index, so "first" need not open the files to know them.
+    test::writeText(dir / "cfd/a.vtk.series",
+                    R"({"file-series-version": "1.0", "files": [{"name": "a_0.vtk", "time": 0}, )"
+                    R"({"name": "a_1.vtk", "time": 0.01}, {"name": "a_2.vtk", "time": 0.02}]})");
+    test::writeText(dir / "all.toml", dropletScene("\"cfd/a.vtk.series\""));
+    test::writeText(dir / "first.toml", dropletScene("\"cfd/a.vtk.series\"", "check = \"first\""));
+    const auto all = test::runGranulab("run all.toml --quiet --out all", dir);
+    EXPECT_EQ(all.status, 2) << all.output;
+    EXPECT_NE(all.output.find("a_2.vtk"), std::string::npos) << all.output;
+    const auto first = test::runGranulab("run first.toml --quiet --out first", dir);
+    EXPECT_EQ(first.status, 3) << first.output;
+    EXPECT_NE(first.output.find("a_2.vtk"), std::string::npos) << first.output;
+    EXPECT_NE(first.output.find("could not be loaded at t = 0.02"), std::string::npos) << first.output;
+    EXPECT_TRUE(std::filesystem::exists(dir / "first/checkpoint.bin"));
+}
+
 }  // namespace
 }  // namespace granulab

@@ -141,9 +141,12 @@ public:
                 m_world.time(), m_world.stepIndex());
         if (status & kSimInputFailed)
             return fmt::format(
-                "a flow field could not be loaded at t = {:.6g} s (step {}): {}. The files were read "
-                "at the start of the run; was one changed or removed since?",
-                m_world.time(), m_world.stepIndex(), m_inputError);
+                "a flow field could not be loaded at t = {:.6g} s (step {}): {}. {}", m_world.time(),
+                m_world.stepIndex(), m_inputError,
+                m_scene.fluid.check == "first"
+                    ? "With fluid.check = \"first\" the later files are read only when they are due; "
+                      "fix the file and resume from the last checkpoint."
+                    : "The files were read at the start of the run; was one changed or removed since?");
         std::vector<std::string> why;
         if (status & kSimNonFinite) why.push_back("a particle position or velocity became NaN/infinite");
         if (status & kSimUnstable)
