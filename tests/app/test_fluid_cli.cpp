@@ -180,5 +180,20 @@ TEST(Cli, FluidBadLaterFieldStopsBeforeOrWhenDue) {
     EXPECT_TRUE(std::filesystem::exists(dir / "first/checkpoint.bin"));
 }
 
+TEST(Cli, FluidEvenTimingRefusesAResumeWithAnotherEnd) {
+    // The seed's rule spreads the fields over run.end_time (Eq. 4.2): resuming with another end
+    // would move every field's time, so the checkpoint refuses it; the same end resumes.
+    const test::ScratchDir scratch;
+    const auto& dir = scratch.path;
+    std::filesystem::create_directories(dir / "cfd");
+    for (int k = 0; k < 2; ++k) test::writeText(dir / fmt::format("cfd/f_{}.vtk", k), quadField(1 + k, 0));
+    test::writeText(dir / "even.toml", dropletScene("\"cfd\"", "timing = \"even\""));
+    auto r = test::runGranulab("run even.toml --quiet --out run --set run.end_time=0.01", dir);
+    ASSERT_EQ(r.status, 0) << r.output;
+    r = test::runGranulab("run even.toml --quiet --resume run", dir);
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find("fluid.timing"), std::string::npos) << r.output;
+}
+
 }  // namespace
 }  // namespace granulab

@@ -407,10 +407,15 @@ public:
 
     io::SceneIdentity identity() const override {
         // The integrator's state is part of the checkpoint; dt, particles and walls pin the scene.
-        return {{"dem.integrator", m_world.integratorName()},
-                {"dt", fmt::format("{:.17g}", m_dt)},
-                {"particles", std::to_string(m_initialParticles)},
-                {"wall segments", std::to_string(m_world.walls().segments.size())}};
+        io::SceneIdentity id = {{"dem.integrator", m_world.integratorName()},
+                                {"dt", fmt::format("{:.17g}", m_dt)},
+                                {"particles", std::to_string(m_initialParticles)},
+                                {"wall segments", std::to_string(m_world.walls().segments.size())}};
+        // The seed's even rule spreads the fields over run.end_time: another end would move them.
+        if (const fluid::FieldSeries* f = m_world.field(); f && f->source().afterTime)
+            id.push_back({"fluid field times (fluid.timing = \"even\", spread over run.end_time)",
+                          fmt::format("{:.17g} s", m_scene.run.endTime)});
+        return id;
     }
     void saveState(std::ostream& out) const override { m_world.saveState(out); }
     void loadState(std::istream& in) override { m_world.loadState(in); }
