@@ -10,40 +10,22 @@ namespace granulab::dem {
 
 namespace {
 
-constexpr Real kMinVoidage = 0.1;
-
-struct Bounds {
-    Real x0, y0, x1, y1;  ///< [m]
-};
-/// Bounding box of the particle centres (at least one particle).
-Bounds centreBounds(const model::ParticleStore& s) noexcept {
-    Bounds b{s.x[0], s.y[0], s.x[0], s.y[0]};
-    for (std::size_t i = 1; i < s.size(); ++i) {
-        b.x0 = std::min(b.x0, s.x[i]);
-        b.x1 = std::max(b.x1, s.x[i]);
-        b.y0 = std::min(b.y0, s.y[i]);
-        b.y1 = std::max(b.y1, s.y[i]);
-    }
-    return b;
-}  ///< floor of the voidage (Di Felice's factor diverges at 0)
+constexpr Real kMinVoidage = 0.1;  ///< floor of the voidage (Di Felice's factor diverges at 0)
 
 /// Voidage at each particle from the particle volume per square cell of edge h in a slab of
 /// thickness `depth`: eps = 1 - V_solid / (h^2 depth), at least kMinVoidage.
 void voidages(const model::ParticleStore& s, Real h, Real depth, VoidageScratch& scratch,
-              std::vector<Real>& out) noexcept {
-    const std::size_t n = s.size();
-    const auto [x0, y0, x1, y1] = centreBounds(s);
-    const auto nx = static_cast<std::size_t>((x1 - x0) / h) + 1,
-               ny = static_cast<std::size_t>((y1 - y0) / h) + 1;
-    const auto cellOf = [&](std::size_t i) {
-        return static_cast<std::size_t>((s.x[i] - x0) / h) + nx * static_cast<std::size_t>((s.y[i] - y0) / h);
-    };
-    scratch.solid.assign(nx * ny, 0.0);
-    for (std::size_t i = 0; i < n; ++i)
-        scratch.solid[cellOf(i)] += 4.0 / 3.0 * kPi * s.radius[i] * s.radius[i] * s.radius[i];
+              std::vector<Real>& out) {
+    scratch.bins.build(s, h);
     const Real cellVolume = h * h * depth;
-    for (std::size_t i = 0; i < n; ++i)
-        out[i] = std::max(kMinVoidage, 1 - scratch.solid[cellOf(i)] / cellVolume);
+    for (std::size_t c = 0; c < scratch.bins.cellCount(); ++c) {
+        const auto [begin, end] = scratch.bins.members(c);
+        Real solid = 0;
+        for (const std::uint32_t* i = begin; i != end; ++i)
+            solid += 4.0 / 3.0 * kPi * std::pow(s.radius[*i], 3);
+        for (const std::uint32_t* i = begin; i != end; ++i)
+            out[*i] = std::max(kMinVoidage, 1 - solid / cellVolume);
+    }
 }
 
 template <class Drag, class Method>
@@ -121,8 +103,7 @@ void addFluidForces(model::ParticleStore& s, const fluid::FieldSeries& field, co
         c.drag);
 }
 
-void addAttraction(model::ParticleStore& s, Real constant, Real cutoff,
-                   std::vector<std::uint32_t>& cells) noexcept {
+void addAttraction(model::ParticleStore& s, Real constant, Real cutoff, CellBins& bins) noexcept {
     const std::size_t n = s.size();
     const auto pair = [&](std::size_t i, std::size_t j) {
         const Real dx = s.x[j] - s.x[i], dy = s.y[j] - s.y[i];
@@ -142,45 +123,21 @@ void addAttraction(model::ParticleStore& s, Real constant, Real cutoff,
         return;
     }
     if (n < 2) return;
-    // Cell grid of edge `cutoff`: pairs in the same and the 4 forward neighbour cells.
-    const auto [x0, y0, x1, y1] = centreBounds(s);
-    const auto nx = static_cast<std::int64_t>((x1 - x0) / cutoff) + 1;
-    const auto ny = static_cast<std::int64_t>((y1 - y0) / cutoff) + 1;
-    // A sparse layout would be needed for particles spread over many cutoffs; cap the grid and fall
-    // back to all pairs (still correct) when it would be huge.
-    if (nx * ny > static_cast<std::int64_t>(16 * n + 1024)) {
-        for (std::size_t i = 0; i < n; ++i)
-            for (std::size_t j = i + 1; j < n; ++j) pair(i, j);
-        return;
-    }
-    const auto cellOf = [&](std::size_t i) {
-        return static_cast<std::int64_t>((s.x[i] - x0) / cutoff) +
-               nx * static_cast<std::int64_t>((s.y[i] - y0) / cutoff);
-    };
-    const std::size_t ncell = static_cast<std::size_t>(nx * ny);
-    cells.assign(2 * ncell + 1 + n, 0);  // offsets [0, ncell], particles by cell, fill pointers
-    std::uint32_t* start = cells.data();
-    std::uint32_t* members = start + ncell + 1;
-    std::uint32_t* fill = members + n;
-    for (std::size_t i = 0; i < n; ++i) ++start[cellOf(i) + 1];
-    for (std::size_t c = 0; c < ncell; ++c) start[c + 1] += start[c];
-    std::copy(start, start + ncell, fill);
-    for (std::size_t i = 0; i < n; ++i)
-        members[fill[static_cast<std::size_t>(cellOf(i))]++] = static_cast<std::uint32_t>(i);
+    // Cells of edge `cutoff`: pairs in the same cell and in the 4 forward neighbour cells.
+    bins.build(s, cutoff);
     const std::int64_t offsets[4][2] = {{1, 0}, {-1, 1}, {0, 1}, {1, 1}};
-    for (std::int64_t cy = 0; cy < ny; ++cy)
-        for (std::int64_t cx = 0; cx < nx; ++cx) {
-            const std::size_t c = static_cast<std::size_t>(cx + nx * cy);
-            for (std::uint32_t a = start[c]; a < start[c + 1]; ++a) {
-                for (std::uint32_t b = a + 1; b < start[c + 1]; ++b) pair(members[a], members[b]);
-                for (const auto& o : offsets) {
-                    const std::int64_t ox = cx + o[0], oy = cy + o[1];
-                    if (ox < 0 || ox >= nx || oy >= ny) continue;
-                    const std::size_t d = static_cast<std::size_t>(ox + nx * oy);
-                    for (std::uint32_t b = start[d]; b < start[d + 1]; ++b) pair(members[a], members[b]);
-                }
+    for (std::size_t c = 0; c < bins.cellCount(); ++c) {
+        const auto [begin, end] = bins.members(c);
+        for (const std::uint32_t* a = begin; a != end; ++a) {
+            for (const std::uint32_t* b = a + 1; b != end; ++b) pair(*a, *b);
+            for (const auto& o : offsets) {
+                const std::size_t d = bins.find(bins.cellX(c) + o[0], bins.cellY(c) + o[1]);
+                if (d == bins.cellCount()) continue;
+                const auto [nb, ne] = bins.members(d);
+                for (const std::uint32_t* b = nb; b != ne; ++b) pair(*a, *b);
             }
         }
+    }
 }
 
 }  // namespace granulab::dem

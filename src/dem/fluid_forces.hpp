@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "dem/cell_bins.hpp"
 #include "fluid/drag_laws.hpp"
 #include "fluid/field_series.hpp"
 #include "model/particle_store.hpp"
@@ -36,7 +37,7 @@ struct FluidStats {
 /// interpolant of the cell each particle slot was in (fluid::LocalPatch; a patch is valid for any
 /// particle inside its cell, so slots renumbered since only cost a lookup).
 struct VoidageScratch {
-    std::vector<Real> solid;                  ///< [m^3] particle volume per cell
+    CellBins bins;                            ///< particles by voidage cell
     std::vector<Real> eps;                    ///< voidage at each particle
     std::vector<fluid::LocalPatch> patches;   ///< by slot, of the current field
     std::uint64_t patchesGeneration = ~0ull;  ///< FieldSeries::generation() the patches belong to
@@ -49,8 +50,8 @@ void addFluidForces(model::ParticleStore& s, const fluid::FieldSeries& field, co
 
 /// Mutual attraction F = G m_i m_j / d^2 along the centre line (cfddem Eq. 3.72), skipping
 /// coincident centres; all pairs (cutoff 0) or pairs closer than `cutoff` [m] through a cell grid
-/// (`cells` is scratch). Pairs in a fixed order, so the sums are deterministic.
-void addAttraction(model::ParticleStore& s, Real constant, Real cutoff,
-                   std::vector<std::uint32_t>& cells) noexcept;
+/// (`bins` is scratch; particles spread far apart use a sparse layout, never all pairs). Pairs in a
+/// fixed order, so the sums are deterministic.
+void addAttraction(model::ParticleStore& s, Real constant, Real cutoff, CellBins& bins) noexcept;
 
 }  // namespace granulab::dem

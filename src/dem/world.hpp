@@ -194,7 +194,7 @@ private:
     std::unique_ptr<fluid::FieldSeries> m_field;
     FluidStats m_fluidStats;
     VoidageScratch m_voidage;
-    std::vector<std::uint32_t> m_attractionCells;
+    CellBins m_attractionCells;
     std::string m_fieldError;
 };
 

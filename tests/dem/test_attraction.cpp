@@ -29,7 +29,7 @@ TEST(Attraction, TwoBodiesFeelNewtonsLaw) {
     s.add(1, {3, 4}, {}, 0, 0, 0.1, 5.0, 1, 0);
     s.fx = {0, 0};
     s.fy = {0, 0};
-    std::vector<std::uint32_t> scratch;
+    dem::CellBins scratch;
     dem::addAttraction(s, 6.674e-11, 0, scratch);
     const Real f = 6.674e-11 * 2 * 5 / 25;  // d = 5 m
     EXPECT_NEAR(s.fx[0], f * 0.6, 1e-25);
@@ -42,7 +42,7 @@ TEST(Attraction, CutoffGridSumsExactlyThePairsWithinTheCutoff) {
     const Real cutoff = 0.7;
     model::ParticleStore grid = randomStore(400, 10, 3);
     model::ParticleStore brute = grid;
-    std::vector<std::uint32_t> scratch;
+    dem::CellBins scratch;
     dem::addAttraction(grid, 1.0, cutoff, scratch);
     for (std::size_t i = 0; i < brute.size(); ++i)
         for (std::size_t j = i + 1; j < brute.size(); ++j) {
@@ -61,6 +61,28 @@ TEST(Attraction, CutoffGridSumsExactlyThePairsWithinTheCutoff) {
         total += std::abs(brute.fx[i]);
     }
     EXPECT_GT(total, 1.0);  // pairs within the cutoff exist
+}
+
+TEST(Attraction, FarOutlierUsesSparseCellsNotAllPairs) {
+    // One particle 1e9 m away: a dense grid of cutoff cells would not fit in memory; the sparse
+    // cells give the same forces as the pairs within the cutoff (the outlier feels none).
+    model::ParticleStore grid = randomStore(300, 5, 9);
+    grid.add(300, {1e9, 1e9}, {}, 0, 0, 0.01, 1.0, 1e-4, 0);
+    grid.fx.back() = grid.fy.back() = 0;
+    model::ParticleStore dense = grid;
+    dense.keep([] {
+        std::vector<std::uint32_t> k(300);
+        for (std::uint32_t i = 0; i < 300; ++i) k[i] = i;
+        return k;
+    }());
+    dem::CellBins a, b;
+    dem::addAttraction(grid, 1.0, 0.5, a);
+    dem::addAttraction(dense, 1.0, 0.5, b);
+    for (std::size_t i = 0; i < 300; ++i) {
+        EXPECT_NEAR(grid.fx[i], dense.fx[i], 1e-9 * (1 + std::abs(dense.fx[i])));
+        EXPECT_NEAR(grid.fy[i], dense.fy[i], 1e-9 * (1 + std::abs(dense.fy[i])));
+    }
+    EXPECT_EQ(grid.fx[300], 0);
 }
 
 TEST(Attraction, ContactSwitchesRemoveContactForces) {
