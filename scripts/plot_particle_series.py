@@ -63,8 +63,11 @@ def import_plotting():
     return numpy, pyplot
 
 
-def read_long(path, quantity, np):
-    """A long-format file `time,id,<quantity>`: {id: (time array, value array)}, rows by time."""
+def read_long(path, quantity, np, allow_empty=False):
+    """A long-format file `time,id,<quantity>`: {id: (time array, value array)}, rows by time.
+    Raises InputError for a malformed file, or one without data rows unless `allow_empty`.
+    The one reader of granulab's CSV/ series (examples/levitation/plot.py and
+    examples/channel/plot_trajectories.py import it)."""
     with open(path) as f:
         lines = [ln for ln in f.read().split("\n")]
     while lines and not lines[-1].strip():
@@ -91,6 +94,8 @@ def read_long(path, quantity, np):
         ids.append(i)
         values.append(v)
     if not times:
+        if allow_empty:
+            return {}
         raise InputError(f"{path}: no data rows after the header")
     times, ids, values = np.array(times), np.array(ids), np.array(values)
     out = {}

@@ -34,6 +34,10 @@ import matplotlib.tri as mtri  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.path import Path  # noqa: E402
 
+# The reader of granulab's CSV/ series lives with scripts/plot_particle_series.py.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
+import plot_particle_series as particle_series  # noqa: E402
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 
@@ -162,18 +166,10 @@ def read_long(path, quantity):
     if not os.path.isfile(path):
         fail(f"{path} not found: run granulab with output.particle_series = true "
              f"(particles.toml sets it)")
-    with open(path, newline="") as f:
-        header = [h.strip() for h in next(csv.reader(f), [])]
-    if header != ["time", "id", quantity]:
-        fail(f"{path}: header {','.join(header)}, expected time,id,{quantity}")
-    data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
-    if data.shape[0] == 0:
-        return {}
-    order = np.lexsort((data[:, 0], data[:, 1]))  # by id, then time
-    data = data[order]
-    ids = data[:, 1].astype(int)
-    cuts = np.flatnonzero(np.diff(ids)) + 1
-    return {int(rows[0, 1]): (rows[:, 0], rows[:, 2]) for rows in np.split(data, cuts)}
+    try:
+        return particle_series.read_long(path, quantity, np, allow_empty=True)
+    except particle_series.InputError as e:
+        fail(str(e))
 
 
 def read_walls(scene):

@@ -33,6 +33,10 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+# The reader of granulab's CSV/ series lives with scripts/plot_particle_series.py.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
+import plot_particle_series as particle_series  # noqa: E402
+
 RHO_P = 15.0  # [kg/m^3] polystyrene (ball.toml)
 RHO_F = 1.25  # [kg/m^3] air (ball.toml [fluid])
 CW = 0.47  # [-] drag coefficient (ball.toml [fluid])
@@ -50,15 +54,10 @@ def read_long(path, quantity):
     if not os.path.isfile(path):
         sys.exit(f"plot.py: {path} not found: run granulab with output.particle_series = true "
                  f"(ball.toml sets it)")
-    with open(path, newline="") as f:
-        header = [h.strip() for h in next(csv.reader(f), [])]
-    if header != ["time", "id", quantity]:
-        sys.exit(f"plot.py: {path}: header {','.join(header)}, expected time,id,{quantity}")
-    data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
-    if data.shape[0] == 0:
-        sys.exit(f"plot.py: {path}: no data rows")
-    ids = data[:, 1].astype(int)
-    return {int(i): (data[ids == i, 0], data[ids == i, 2]) for i in np.unique(ids)}
+    try:
+        return particle_series.read_long(path, quantity, np)
+    except particle_series.InputError as e:
+        sys.exit(f"plot.py: {e}")
 
 
 def pick(series, path, wanted):

@@ -39,10 +39,10 @@ std::string didYouMean(std::string_view word, const std::vector<std::string>& ca
     return "";
 }
 
-std::string joinList(const std::vector<std::string>& items) {
+std::string joinList(const std::vector<std::string>& items, std::string_view separator) {
     std::string s;
     for (std::size_t k = 0; k < items.size(); ++k) {
-        if (k) s += ", ";
+        if (k) s += separator;
         s += items[k];
     }
     return s;

@@ -15,8 +15,8 @@ std::size_t editDistance(std::string_view a, std::string_view b);
 /// " (did you mean 'x'?)" for the closest candidate within a small distance, else "".
 std::string didYouMean(std::string_view word, const std::vector<std::string>& candidates);
 
-/// "a, b, c" for messages listing the allowed values.
-std::string joinList(const std::vector<std::string>& items);
+/// "a, b, c" for messages listing the allowed values (another separator when given).
+std::string joinList(const std::vector<std::string>& items, std::string_view separator = ", ");
 
 /// Reports `key` at `loc` unless `value` is one of `allowed`: "'x' is not allowed (did you mean
 /// 'y'?); allowed: a, b".

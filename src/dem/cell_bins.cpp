@@ -45,12 +45,14 @@ void CellBins::build(const model::ParticleStore& s, Real h) {
         }
         m_keys.assign(m_start.begin(), m_start.end() - 1);  // fill pointers, reusing the key storage
         for (std::size_t i = 0; i < n; ++i)
-            m_members[m_keys[static_cast<std::size_t>(ixOf(i) + m_nx * iyOf(i))]++] = static_cast<std::uint32_t>(i);
+            m_members[m_keys[static_cast<std::size_t>(ixOf(i) + m_nx * iyOf(i))]++] =
+                static_cast<std::uint32_t>(i);
         return;
     }
     // Sparse: sort (key, slot) pairs; the slot breaks ties, so the order is deterministic.
     m_scratch.resize(n);
-    for (std::size_t i = 0; i < n; ++i) m_scratch[i] = {keyOf(ixOf(i), iyOf(i)), static_cast<std::uint32_t>(i)};
+    for (std::size_t i = 0; i < n; ++i)
+        m_scratch[i] = {keyOf(ixOf(i), iyOf(i)), static_cast<std::uint32_t>(i)};
     std::sort(m_scratch.begin(), m_scratch.end());
     m_keys.clear();
     m_cellX.clear();

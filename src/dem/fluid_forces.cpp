@@ -34,6 +34,7 @@ void fluidLoop(model::ParticleStore& s, const Drag& drag, const Method& method,
                const std::vector<Real>* voidage, fluid::LocalPatch* patches, FluidStats& stats) noexcept {
     const fluid::FieldInterpolator* second = field.second();
     const Real w = field.weight();
+    Real maxReynoldsArg2 = 0;  ///< [m^4/s^2] largest (|v_r| eps R)^2
     for (std::size_t i = 0; i < s.size(); ++i) {
         const Vec2 pos{s.x[i], s.y[i]};
         fluid::FluidSample f;
@@ -58,13 +59,14 @@ void fluidLoop(model::ParticleStore& s, const Drag& drag, const Method& method,
         const Real eps = voidage ? (*voidage)[i] : 1.0;
         Vec2 force = drag.force(vr, r, c.fluid, eps);
         stats.drag += force;
-        if constexpr (!std::is_same_v<Drag, fluid::NoDrag>)
-            stats.maxReynolds = std::max(stats.maxReynolds, fluid::reynolds(c.fluid, norm(vr) * eps, r));
+        if constexpr (!std::is_same_v<Drag, fluid::NoDrag>)  // Re ~ |v_r| eps r: its square, no sqrt here
+            maxReynoldsArg2 = std::max(maxReynoldsArg2, norm2(vr) * eps * eps * r * r);
         if (c.buoyancy) force -= g * (c.fluid.density * volume);  // cfddem Eq. 3.63
         if (c.pressureGradient) force -= field.pressureGradient(pos) * (volume * c.pressureToPascal);
         s.fx[i] += force.x;
         s.fy[i] += force.y;
     }
+    stats.maxReynolds = fluid::reynolds(c.fluid, std::sqrt(maxReynoldsArg2), 1.0);
 }
 
 }  // namespace

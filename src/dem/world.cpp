@@ -50,7 +50,8 @@ World::World(WorldConfig config, model::ParticleStore store, model::WallSet wall
     m_shapes.anyPolygon = m_pool.size() > 0;
     for (const ParticleId id : m_store.id) m_nextId = std::max<ParticleId>(m_nextId, id + 1);
     for (const Real r : m_store.radius) m_maxRadius = std::max(m_maxRadius, r);
-    if (m_config.fluid) m_field = std::make_unique<fluid::FieldSeries>(m_config.fluid->source);
+    // The series owns the field source from here on (the config keeps the force parameters).
+    if (m_config.fluid) m_field = std::make_unique<fluid::FieldSeries>(std::move(m_config.fluid->source));
 }
 
 Real World::totalMass() const noexcept {

@@ -61,7 +61,7 @@ struct WorldConfig {
     bool wallContacts = true;           ///< particle-wall contacts (cfddem #FB)
     /// One-way coupling to a flow field (cfddem spec 5); absent: no fluid.
     struct Fluid {
-        fluid::FieldSource source;
+        fluid::FieldSource source;  ///< moved into the World's FieldSeries (World::field()) at construction
         FluidForceConfig forces;
     };
     std::optional<Fluid> fluid;

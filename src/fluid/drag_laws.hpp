@@ -102,6 +102,10 @@ std::vector<std::string> dragKeywords();
 /// The law of `keyword` (an unknown keyword gives NoDrag; the scene reader checks keywords);
 /// `cw` is the quadratic law's coefficient.
 DragLaw makeDragLaw(const std::string& keyword, Real cw);
+/// True if the law depends on the viscosity (stokes, schiller_naumann, di_felice).
+inline bool needsViscosity(const DragLaw& law) noexcept {
+    return !std::holds_alternative<NoDrag>(law) && !std::holds_alternative<QuadraticDrag>(law);
+}
 /// True if the law needs the local voidage (di_felice).
 inline bool needsVoidage(const DragLaw& law) noexcept {
     return std::holds_alternative<DiFeliceDrag>(law);

@@ -58,6 +58,8 @@
 #include <unordered_map>
 #include <utility>
 
+#include "core/suggest.hpp"
+
 namespace granulab::io {
 namespace {
 
@@ -76,12 +78,6 @@ std::string lowerExtension(const fs::path& p) {
 bool isDataFile(const fs::path& p) {
     const std::string ext = lowerExtension(p);
     return std::find(kDataExtensions.begin(), kDataExtensions.end(), ext) != kDataExtensions.end();
-}
-
-std::string joined(const std::vector<std::string>& items, const char* separator) {
-    std::string out;
-    for (const std::string& s : items) out += (out.empty() ? "" : separator) + s;
-    return out;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -103,7 +99,7 @@ std::string condensed(const char* text) {
             line = line.substr(0, open) + ": " + line.substr(close + 3);
         lines.push_back(line);
     }
-    std::string out = joined(lines, " ");
+    std::string out = joinList(lines, " ");
     for (const char* tail : {" for request:", " when asked by "})
         if (const std::size_t at = out.find(tail); at != std::string::npos) out.resize(at);
     for (char& c : out)
@@ -142,7 +138,7 @@ public:
             all.resize(3);
             all.push_back("...");
         }
-        return joined(all, "; ");
+        return joinList(all, "; ");
     }
 
     std::vector<std::string> errors, warnings;
@@ -338,7 +334,7 @@ std::string arrayNames(vtkFieldData* fd) {
         const char* name = fd->GetArrayName(i);
         names.emplace_back(name ? name : "(unnamed)");
     }
-    return names.empty() ? "none" : joined(names, ", ");
+    return names.empty() ? "none" : joinList(names);
 }
 
 enum class Where { Point, Cell };
@@ -670,7 +666,7 @@ std::vector<FieldFile> listFolder(const fs::path& folder) {
         std::vector<std::string> names;
         for (const fs::path& p : collections) names.push_back(p.filename().string());
         std::sort(names.begin(), names.end());
-        throw FieldFileError(folder.string() + ": holds several collections (" + joined(names, ", ") +
+        throw FieldFileError(folder.string() + ": holds several collections (" + joinList(names) +
                              "); name one of them");
     }
     if (data.empty())

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "fluid/drag_laws.hpp"
 #include "io/range_checks.hpp"
 
 namespace granulab::io {
@@ -27,8 +28,7 @@ void checkFluid(const model::SceneDef& scene, Diagnostics& d) {
     const model::FluidDef& f = scene.fluid;
     const SourceLoc& loc = f.loc;
     checkPositive(d, loc, "fluid.density", f.density, "kg/m^3");
-    const bool viscous = f.drag == "stokes" || f.drag == "schiller_naumann" || f.drag == "di_felice";
-    if (viscous)
+    if (fluid::needsViscosity(fluid::makeDragLaw(f.drag, f.cw)))
         checkPositive(d, loc, "fluid.viscosity", f.viscosity, "Pa s");
     else
         checkNonNegative(d, loc, "fluid.viscosity", f.viscosity, "Pa s");

@@ -6,6 +6,8 @@
 
 #include <cmath>
 
+#include "fluid/drag_laws.hpp"
+
 namespace granulab::app {
 
 namespace {
@@ -64,9 +66,7 @@ void checkCoverage(const model::SceneDef& scene, const fluid::FieldInterpolator&
 /// error above tau (well inside the unstable side of the accurate range), a warning above tau / 10.
 void checkDragTimeStep(const model::SceneDef& scene, dem::PreparedScene& prepared, Diagnostics& diags) {
     const model::FluidDef& def = scene.fluid;
-    if (def.drag != "stokes" && def.drag != "schiller_naumann" && def.drag != "di_felice") return;
-    std::vector<Real> density(scene.materials.size(), 0);
-    for (std::size_t m = 0; m < scene.materials.size(); ++m) density[m] = scene.materials[m].density;
+    if (!fluid::needsViscosity(fluid::makeDragLaw(def.drag, def.cw))) return;
     Real tau = 1e300, radius = 0;
     const auto consider = [&](Real r, Real rho) {
         const Real t = (4.0 / 3.0 * kPi * r * r * r * rho) / (6 * kPi * def.viscosity * r);
@@ -75,8 +75,7 @@ void checkDragTimeStep(const model::SceneDef& scene, dem::PreparedScene& prepare
             radius = r;
         }
     };
-    for (const auto& p : prepared.initial.particles)
-        if (p.material < density.size()) consider(p.radius, density[p.material]);
+    for (const auto& p : prepared.initial.particles) consider(p.radius, scene.materials[p.material].density);
     for (const auto* ins : scene.machines.inserts()) {
         Real rho = 0;
         for (const auto& m : scene.materials)
@@ -139,7 +138,8 @@ std::vector<std::string> fluidSeriesColumns(const model::SceneDef& scene) {
     if (!scene.fluid.present) return {};
     std::vector<std::string> c = {"fluid_outside", "fluid_drag_x", "fluid_drag_y", "fluid_max_reynolds",
                                   "fluid_field"};
-    if (scene.fluid.drag == "di_felice") c.push_back("fluid_min_voidage");
+    if (fluid::needsVoidage(fluid::makeDragLaw(scene.fluid.drag, scene.fluid.cw)))
+        c.push_back("fluid_min_voidage");
     return c;
 }
 
@@ -152,7 +152,7 @@ void appendFluidSeriesRow(const model::SceneDef& scene, const dem::World& world,
     row.push_back(st.drag.y);
     row.push_back(st.maxReynolds);
     row.push_back(f && f->ready() ? static_cast<double>(f->currentIndex()) : 0.0);
-    if (scene.fluid.drag == "di_felice") row.push_back(st.minVoidage);
+    if (fluid::needsVoidage(world.config().fluid->forces.drag)) row.push_back(st.minVoidage);
 }
 
 std::vector<io::FinalExtraColumn> fluidFinalColumns(const dem::World& world) {
