@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
+#include <optional>
 
 #include "app/analyze.hpp"
 #include "app/convert.hpp"
@@ -15,10 +16,19 @@
 #include "app/run.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
+#ifdef GRANULAB_HAVE_MPI
+#include "mpi/mpi_communicator.hpp"
+#endif
 
 using namespace granulab;
 
 int main(int argc, char** argv) {
+#ifdef GRANULAB_HAVE_MPI
+    // Under mpirun: MPI for the whole of main (MPI_Finalize when it returns); the world
+    // communicator is then the MpiCommunicator. Otherwise one process, no MPI_Init.
+    std::optional<mpi::MpiEnvironment> mpiEnvironment;
+    if (mpi::MpiEnvironment::launchedByMpirun()) mpiEnvironment.emplace(argc, argv);
+#endif
     CLI::App cli{"granulab - granular matter simulation (DEM and event-driven gases). See `granulab help`."};
     cli.set_version_flag("--version", std::string("granulab ") + kVersion);
     cli.require_subcommand(0, 1);

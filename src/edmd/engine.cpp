@@ -91,40 +91,70 @@ Engine<D, Queue>::Engine(EngineConfig config, std::vector<V> x, std::vector<V> v
     if (m_config.tc > 0) m_lastCollision.assign(n, -kNoEvent);
     m_event.assign(n, Event{});
     m_slot.resize(n);
-    for (std::uint32_t i = 0; i < n; ++i) m_slot[i] = i;
+    m_id.resize(n);
+    for (std::uint32_t i = 0; i < n; ++i) m_slot[i] = m_id[i] = i;
     buildCells();
     sortParticles(false);
     rescheduleAll();
     resetWatchdog();
 }
 
-template <int D, class Queue>
-void Engine<D, Queue>::buildCells() {
-    const auto n = size();
-    const Real amax = m_maxRadius0 + std::max<Real>(0, m_config.growthRate * m_now);
+template <int D>
+std::array<int, 3> chooseCellGrid(const EngineConfig& config, std::uint32_t n, Real amax) {
+    constexpr int kMaxCells = 65535;
     // Default edge (spec 2.4): C/N ~ 1.5 (2D) or ~8 (3D) at low density, else the diameter.
     Real volume = 1;
-    for (int d = 0; d < D; ++d) volume *= m_config.box[d];
-    const Real cellsPerParticle = D == 2 ? 1.5 : 8.0;
-    const Real lowDensityEdge = n ? std::pow(volume / (cellsPerParticle * n), 1.0 / D) : 0;
+    for (int d = 0; d < D; ++d) volume *= config.box[d];
+    const Real cellsPerParticle =
+        config.cellsPerParticle > 0 ? config.cellsPerParticle : (D == 2 ? 1.5 : 8.0);
+    const Real targetEdge = n ? std::pow(volume / (cellsPerParticle * n), 1.0 / D) : 0;
     // Growing spheres: a hair above the diameter, so that a re-grid always lowers the cell count.
-    const Real diameter = 2 * amax * (m_config.growthRate > 0 ? 1 + 1e-9 : 1);
+    const Real diameter = 2 * amax * (config.growthRate > 0 ? 1 + 1e-9 : 1);
     Real smallestPeriodicEdge = kNoEvent;
     for (int d = 0; d < D; ++d)
-        if (m_config.periodic[d]) smallestPeriodicEdge = std::min(smallestPeriodicEdge, m_config.box[d]);
-    const Real edge =
-        std::max({m_config.cellSize, diameter, std::min(lowDensityEdge, smallestPeriodicEdge / 3)});
-    std::size_t cellCount = 1;
+        if (config.periodic[d]) smallestPeriodicEdge = std::min(smallestPeriodicEdge, config.box[d]);
+    const Real smallestEdge = std::max(config.cellSize, diameter);  // cells only need to exceed 2a
+    const Real edge = std::max(smallestEdge, std::min(targetEdge, smallestPeriodicEdge / 3));
+    std::array<int, 3> result{1, 1, 1};
     for (int d = 0; d < D; ++d) {
-        const Real L = m_config.box[d];
+        const Real L = config.box[d];
         // Fewer cells than the edge allows is always correct (cells only need to exceed 2a).
-        int cells = edge > 0 ? static_cast<int>(std::min<Real>(std::floor(L / edge), kMaxCellsPerAxis)) : 1;
-        if (m_config.periodic[d] && cells < 3)
+        int cells = edge > 0 ? static_cast<int>(std::min<Real>(std::floor(L / edge), kMaxCells)) : 1;
+        if (config.powerOfTwoCells && cells > 1) {
+            // The power of two nearest to the target count (in ratio), but no more than the
+            // diameter allows; Morton blocks are then boxes without padding (spec 3.1).
+            const int most = smallestEdge > 0
+                                 ? static_cast<int>(std::min<Real>(std::floor(L / smallestEdge), kMaxCells))
+                                 : kMaxCells;
+            const Real target = edge > 0 ? L / edge : 1;
+            int p = 1;
+            while (2 * p <= most && 2 * p <= target * std::sqrt(2.0)) p *= 2;
+            cells = p;
+        }
+        if (config.periodic[d] && cells < 3)
             throw std::invalid_argument(
                 "edmd::Engine: a periodic axis must hold at least 3 cells of one diameter "
                 "(box edge " +
                 std::to_string(L) + " m, diameter " + std::to_string(2 * amax) + " m)");
-        cells = std::max(cells, 1);
+        result[d] = std::max(cells, 1);
+    }
+    return result;
+}
+
+template std::array<int, 3> chooseCellGrid<2>(const EngineConfig&, std::uint32_t, Real);
+template std::array<int, 3> chooseCellGrid<3>(const EngineConfig&, std::uint32_t, Real);
+
+template <int D, class Queue>
+void Engine<D, Queue>::buildCells() {
+    const auto n = size();
+    const Real amax = m_maxRadius0 + std::max<Real>(0, m_config.growthRate * m_now);
+    // A parallel run's global grid comes with its records (domain layout); else it is chosen.
+    const std::array<int, 3> grid =
+        m_forcedCells[0] > 0 ? m_forcedCells : chooseCellGrid<D>(m_config, n, amax);
+    std::size_t cellCount = 1;
+    for (int d = 0; d < D; ++d) {
+        const Real L = m_config.box[d];
+        const int cells = grid[d];
         m_cells[d] = cells;
         m_stride[d] = static_cast<std::uint32_t>(cellCount);
         m_cellEdge[d] = L / cells;
@@ -183,6 +213,7 @@ void Engine<D, Queue>::sortParticles(bool requeue) {
             std::swap(m_s[s], m_s[d]);
             std::swap(m_event[s], m_event[d]);
             std::swap(m_cellOf[s], m_cellOf[d]);
+            std::swap(m_id[s], m_id[d]);
             if (!m_radius.empty()) std::swap(m_radius[s], m_radius[d]);
             if (!m_mass.empty()) std::swap(m_mass[s], m_mass[d]);
             if (!m_omega.empty()) std::swap(m_omega[s], m_omega[d]);
@@ -198,6 +229,7 @@ void Engine<D, Queue>::sortParticles(bool requeue) {
     }
     if (requeue) {
         m_queue.reset(n);
+        m_queue.setTieKeys(m_id.data());
         for (std::uint32_t s = 0; s < n; ++s) m_queue.set(s, times[s]);
     }
 }
@@ -205,6 +237,7 @@ void Engine<D, Queue>::sortParticles(bool requeue) {
 template <int D, class Queue>
 void Engine<D, Queue>::rescheduleAll() noexcept {
     m_queue.reset(size());
+    m_queue.setTieKeys(m_id.data());
     for (std::uint32_t s = 0; s < size(); ++s) schedule(s);
 }
 
@@ -450,8 +483,8 @@ template <bool Gravity, bool Growing, bool Uniform>
                     freeFlight<Gravity>(xj, vj, g, now - q.tst);
                     Real dt;
                     if (!pairTime<Growing, Uniform>(p, j, xiImage - xj, p.v - vj, bound, dt)) continue;
-                    if (dt < next.dt ||
-                        (dt == next.dt && next.ev.partner < kMaxParticles && j < next.ev.partner)) {
+                    if (dt < next.dt || (dt == next.dt && next.ev.partner < kMaxParticles &&
+                                         m_id[j] < m_id[next.ev.partner])) {
                         next.dt = dt;
                         bound = 2 * next.dt * kSafe;
                         next.ev = {j, q.counter};
@@ -781,7 +814,8 @@ typename Engine<D, Queue>::V Engine<D, Queue>::momentum() const noexcept {
 template <int D, class Queue>
 std::size_t Engine<D, Queue>::memoryBytes() const noexcept {
     return m_s.capacity() * sizeof(State) + m_event.capacity() * sizeof(Event) +
-           m_cellOf.capacity() * sizeof(CellCoords) + (m_slot.capacity() + m_head.capacity()) * 4 +
+           m_cellOf.capacity() * sizeof(CellCoords) +
+           (m_slot.capacity() + m_id.capacity() + m_head.capacity()) * 4 +
            (m_radius.capacity() + m_mass.capacity() + m_lastCollision.capacity()) * sizeof(Real) +
            m_omega.capacity() * sizeof(Vec3) + m_queue.memoryBytes();
 }
@@ -803,9 +837,7 @@ void Engine<D, Queue>::saveState(std::ostream& os) const {
     writeVector(os, m_s);
     writeVector(os, m_event);
     writeVector(os, m_cellOf);
-    std::vector<std::uint32_t> id(size());  // caller's particle index of each slot (the inverse of m_slot)
-    for (std::uint32_t i = 0; i < size(); ++i) id[m_slot[i]] = i;
-    writeVector(os, id);
+    writeVector(os, m_id);  // particle id of each slot (the inverse of m_slot)
     writeVector(os, m_radius);
     writeVector(os, m_mass);
     writeVector(os, m_omega);
@@ -889,7 +921,9 @@ void Engine<D, Queue>::loadState(std::istream& is) {
             throw std::runtime_error("checkpoint corrupt (particle id)");
         m_slot[id[s]] = s;
     }
+    m_id.assign(id.begin(), id.end());
     m_queue.reset(n);
+    m_queue.setTieKeys(m_id.data());
     for (std::uint32_t s = 0; s < n; ++s) m_queue.set(s, times[s]);
     resetWatchdog();
 }

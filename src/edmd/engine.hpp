@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdint>
 #include <iosfwd>
+#include <memory>
 #include <vector>
 
 #include "edmd/event_queue.hpp"
@@ -37,6 +38,14 @@ struct EngineConfig {
     Real growthRate = 0;
     /// [m] lower bound of the cell edge; 0: the largest diameter (rounded up to fit the box).
     Real cellSize = 0;
+    /// Target number of cells per particle C/N (edmd spec 2.4, AT-6); 0: 1.5 in 2D and 8 in 3D,
+    /// the measured optima at low density. Fewer cells where the diameter, cellSize or the box
+    /// (periodic axes need 3 cells) do not allow as many.
+    Real cellsPerParticle = 0;
+    /// Every axis' cell count a power of two (the nearest to the target that the diameter
+    /// allows): the Morton blocks of the parallel engine (edmd spec 3.1). A serial run with it
+    /// uses the parallel engine's grid, so the two agree event for event.
+    bool powerOfTwoCells = false;
 
     bool rough() const noexcept { return tangentialRestitution > -1; }
 };
@@ -45,6 +54,67 @@ struct EngineStats {
     std::uint64_t events = 0, collisions = 0, annulled = 0, cellCrossings = 0, wallCollisions = 0;
     std::uint64_t tcElastic = 0;  ///< collisions made elastic by the TC rule
     std::uint64_t regrids = 0;    ///< cell grids rebuilt because growing spheres outgrew them
+};
+
+/// Cells per axis of the engine's grid (edmd spec 2.4; EngineConfig's cell keys) for n
+/// particles whose largest radius is amax [m]. Throws std::invalid_argument when a periodic
+/// axis holds fewer than 3 cells.
+template <int D>
+std::array<int, 3> chooseCellGrid(const EngineConfig& config, std::uint32_t n, Real amax);
+
+/// Position of an event in the global order: time, then the particle's global id (edmd spec
+/// 3.8 [I]: ties broken by id, so that serial and parallel runs execute the same order).
+/// A received record of a particle comes before that particle's own event of the same instant
+/// (the record is the state after an earlier event of that instant, dt = 0 events).
+struct EventKey {
+    Real time = kNoEvent;    ///< [s]
+    std::uint32_t id = 0;    ///< global particle id
+    std::uint32_t kind = 0;  ///< 0: a received record, 1: an event
+    friend bool operator<(const EventKey& a, const EventKey& b) noexcept {
+        return a.time < b.time || (a.time == b.time && (a.id < b.id || (a.id == b.id && a.kind < b.kind)));
+    }
+};
+
+/// One particle's complete state, independent of storage slots and ranks: what the parallel
+/// engine's halo copies, migrations, rollback checkpoints and rank-count-independent checkpoints
+/// carry (edmd spec 3.4, 3.8). Plain data (sent as bytes).
+struct ParticleRecord {
+    std::uint32_t id = 0;                 ///< global particle id
+    std::uint32_t counter = 0;            ///< collision counter (spec 2.6)
+    std::array<std::uint16_t, 3> cell{};  ///< cell coordinates per axis
+    /// Scheduled event: kind (0 none, 1 particle, 2 cell face, 3 wall face, 4 not yet
+    /// predicted), face for kinds 2 and 3.
+    std::uint8_t eventKind = 4;
+    std::uint8_t eventFace = 0;
+    std::array<Real, 3> x{};                ///< [m] position at tst
+    std::array<Real, 3> v{};                ///< [m/s] velocity at tst
+    Real tst = 0;                           ///< [s] time of the last update
+    Real eventTime = kNoEvent;              ///< [s]
+    std::uint32_t eventPartner = 0;         ///< global id of the partner (kind 1)
+    std::uint32_t eventPartnerCounter = 0;  ///< its counter when scheduled
+    Real radius0 = 0;                       ///< [m] radius at time 0 (a(t) = radius0 + u_a t)
+    Real mass = 0;                          ///< [kg]
+    std::array<Real, 3> omega{};            ///< [rad/s] (rough spheres)
+    Real lastCollision = -kNoEvent;         ///< [s] time of the last collision (TC model)
+};
+
+/// The engine's state that is not per particle (clock, statistics, accumulators, rules).
+struct EngineGlobals {
+    Real now = 0;
+    EngineStats stats;
+    Real virial = 0, dissipated = 0;
+    Restitution restitution;
+    Real wallRestitution = 1, tc = 0, growthRate = 0;
+};
+
+/// A parallel rank's view of the cell grid (edmd spec 3.1, 3.6): owned cells (interior or
+/// border: next to another rank's cell), halo cells (another rank's cells next to an owned
+/// one, holding virtual copies of its particles) and foreign cells (none of these).
+enum class CellRole : std::uint8_t { Foreign = 0, Interior = 1, Border = 2, Halo = 3 };
+struct DomainLayout {
+    std::array<int, 3> cells{1, 1, 1};  ///< cells per axis of the global grid
+    std::vector<CellRole> role;         ///< per cell index (x fastest); empty: every cell owned
+    std::uint32_t globalParticles = 0;  ///< N: ids are 0 .. N-1
 };
 
 /// Why the last run() stopped short of its end (issue 11's progress watchdog).
@@ -130,7 +200,55 @@ public:
     void saveState(std::ostream& os) const;
     void loadState(std::istream& is);
 
+    // ---- records and the domain mode (edmd spec 3; edmd/parallel/parallel_engine.hpp) ----
+
+    /// An engine from records (their scheduled events kept, kind 4 predicted now) on the grid of
+    /// `layout`. With layout.role empty every cell is owned (a serial engine, e.g. resumed from
+    /// a rank-count-independent checkpoint); else a domain engine: particles in halo cells are
+    /// virtual copies (no events of their own, spec 3.6).
+    Engine(EngineConfig config, const DomainLayout& layout, const EngineGlobals& globals,
+           std::vector<ParticleRecord> records);
+    /// Every particle's record (owned ones only if realOnly), sorted by id; events as scheduled.
+    std::vector<ParticleRecord> records(bool realOnly) const;
+    EngineGlobals globals() const;
+    bool distributed() const noexcept { return m_domain != nullptr; }
+    /// Cell index of cell coordinates (x fastest), as in DomainLayout::role.
+    std::uint32_t cellIndexOf(const std::array<std::uint16_t, 3>& c) const noexcept;
+    /// The next event or received update, and the next one that can touch another rank's
+    /// particles (a border event, spec 3.6, or a pending update): what a step announces.
+    EventKey nextKey() const noexcept;
+    EventKey nextBorderKey() const noexcept;
+    /// Executes events and received updates in key order while their key is below `limit`.
+    std::uint64_t runDomain(EventKey limit);
+    /// A neighbour's record of a particle in an owned or halo cell (or that left them), applied
+    /// at its time tst in key order (queued; applied at once when it is a late virtual copy
+    /// that nothing has read since). Returns false on a causality error (spec 3.8 steps 5-6):
+    /// the record is earlier than what this rank has already done with that particle's
+    /// neighbourhood; causalityError() is then the earliest such time.
+    bool receive(const ParticleRecord& record);
+    Real causalityError() const noexcept;
+    /// A changed particle that other ranks may see: its record and its cell before the changes
+    /// of this step (both cells decide who receives it).
+    struct Change {
+        ParticleRecord record;
+        std::uint32_t oldCell = 0, newCell = 0;
+    };
+    /// Moves the changes since the last call to `out` (cleared first), in the order made.
+    void drainChanges(std::vector<Change>& out);
+    /// Owned particles, kinetic energy [J] (translational + rotational), momentum of the owned
+    /// particles at the current time (one rank's share of the global sums).
+    std::uint32_t ownedCount() const noexcept;
+    /// Sets the clock to t >= time() (all events up to t done): the end of a parallel section.
+    void setTime(Real t) noexcept { m_now = std::max(m_now, t); }
+    /// Adds the events executed per owned cell since the last call to `perCell` (sized to the
+    /// cell count) and restarts the count: the load measure of the balancing (spec 3.2).
+    void takeCellEvents(std::vector<std::uint64_t>& perCell);
+    /// Simulated causality error (tests of the rollback): the first record received after
+    /// `events` more local events is treated as late.
+    void injectCausalityError(std::uint64_t events) noexcept;
+
 private:
+    struct DomainData;
     // ---- events (spec 2.2 "Event", 8 bytes): the partner field encodes the kind.
     static constexpr std::uint32_t kNone = 0xFFFFFFFFu;  ///< no event (t = +inf) / end of a cell list
     /// + face: cell crossing, face = 2 axis + (1 if upward).
@@ -235,20 +353,35 @@ private:
     V positionSlot(std::uint32_t s) const noexcept;
     V velocitySlot(std::uint32_t s) const noexcept;
 
+    // ---- domain mode (engine_domain.cpp)
+    bool realSlot(std::uint32_t s) const noexcept;
+    CellRole roleOf(std::uint32_t s) const noexcept;
+    void noteChange(std::uint32_t s, std::uint32_t oldCell);
+    void scheduleDomain(std::uint32_t s) noexcept;
+    void scheduleDomainBorder(std::uint32_t s) noexcept;
+    void applyPending();
+    std::uint32_t applyRecord(const ParticleRecord& r);
+    std::uint32_t addSlot(std::uint32_t id);
+    void killSlot(std::uint32_t s) noexcept;
+    ParticleRecord recordOf(std::uint32_t s) const;
+    void setFromRecord(std::uint32_t s, const ParticleRecord& r);
+
     EngineConfig m_config;
     BigVector<State> m_s;
     BigVector<Event> m_event;
     BigVector<CellCoords> m_cellOf;  ///< cell of each slot
-    /// Slot of each particle index (the inverse is made only for checkpoints).
+    /// Slot of each particle id (domain mode: of every global id; kNone if not held here).
     BigVector<std::uint32_t> m_slot;
-    std::vector<Real> m_radius;  ///< [m] radius at time 0 per slot; empty if all equal (m_uniformRadius)
-    std::vector<Real> m_mass;    ///< [kg] per slot; empty if all equal (m_uniformMass)
+    BigVector<std::uint32_t> m_id;  ///< global particle id of each slot (the queues' tie keys)
+    std::vector<Real> m_radius;     ///< [m] radius at time 0 per slot; empty if all equal (m_uniformRadius)
+    std::vector<Real> m_mass;       ///< [kg] per slot; empty if all equal (m_uniformMass)
     Real m_uniformRadius = 0, m_uniformMass = 1;
-    std::vector<Vec3> m_omega;            ///< [rad/s] per slot, rough spheres only
-    std::vector<Real> m_lastCollision;    ///< [s] per slot: time of the last collision (TC model only)
-    BigVector<std::uint32_t> m_head;      ///< first slot of each cell
-    Queue m_queue;                        ///< keyed by slot
-    std::array<int, 3> m_cells{1, 1, 1};  ///< cells per axis
+    std::vector<Vec3> m_omega;                  ///< [rad/s] per slot, rough spheres only
+    std::vector<Real> m_lastCollision;          ///< [s] per slot: time of the last collision (TC model only)
+    BigVector<std::uint32_t> m_head;            ///< first slot of each cell
+    Queue m_queue;                              ///< keyed by slot
+    std::array<int, 3> m_cells{1, 1, 1};        ///< cells per axis
+    std::array<int, 3> m_forcedCells{0, 0, 0};  ///< cells per axis given by a DomainLayout (0: chosen)
     std::array<std::uint32_t, 3> m_stride{1, 1, 1};  ///< cell index stride per axis
     std::array<Real, 3> m_cellEdge{1, 1, 1};         ///< [m]
     std::array<Real, 3> m_invCellEdge{1, 1, 1};
@@ -273,7 +406,23 @@ private:
     std::uint64_t m_checkAt = 0;
     /// Starts a fresh watchdog window at the current state (construction, restart, load).
     void resetWatchdog() noexcept;
-    bool m_interrupted = false;  ///< the last run() stopped on an interrupt request
+    bool m_interrupted = false;            ///< the last run() stopped on an interrupt request
+    std::unique_ptr<DomainData> m_domain;  ///< domain mode only
+
+    /// Per-rank data of the domain mode (engine_domain.cpp).
+    struct DomainData {
+        std::vector<CellRole> role;             ///< per cell index
+        std::vector<std::uint32_t> cellEvents;  ///< per cell index: events since takeCellEvents
+        AddressableHeap border;                 ///< per slot: the time of its event if a border event
+        std::vector<std::uint8_t> dead;         ///< per slot: left this rank's cells (slot not reused)
+        std::vector<std::uint32_t> changedAt;   ///< per slot: index in `changes` + 1 (0: unchanged)
+        std::vector<Change> changes;
+        std::vector<ParticleRecord> pending;         ///< received updates, a min-heap by (tst, id)
+        Real lastVirtualRead = -kNoEvent;            ///< [s] last time a border particle was predicted
+        Real error = kNoEvent;                       ///< [s] earliest causality error
+        std::uint64_t injectAt = ~std::uint64_t{0};  ///< test hook: event count of a forced error
+        std::uint32_t owned = 0;
+    };
 };
 
 }  // namespace granulab::edmd

@@ -24,7 +24,7 @@ void AddressableHeap::set(std::uint32_t i, Real t) noexcept {
     m_time[i] = t;
     std::uint32_t slot = m_pos[i];
     const auto n = static_cast<std::uint32_t>(m_heap.size());
-    if (earlier(t, i, old, i)) {  // sift up
+    if (t < old) {  // sift up
         while (slot > 0) {
             const std::uint32_t parent = (slot - 1) / 2;
             if (!before(i, m_heap[parent])) break;
@@ -45,6 +45,43 @@ void AddressableHeap::set(std::uint32_t i, Real t) noexcept {
     place(slot, i);
 }
 
+void AddressableHeap::grow(std::uint32_t n) {
+    // New entries at +infinity go to the end: their parents are finite or also +infinity with a
+    // key that may be larger, so each is sifted up (rarely moves).
+    const auto old = static_cast<std::uint32_t>(m_time.size());
+    if (n <= old) return;
+    m_time.resize(n, kNever);
+    m_heap.resize(n);
+    m_pos.resize(n);
+    for (std::uint32_t k = old; k < n; ++k) {
+        std::uint32_t slot = k;
+        while (slot > 0 && before(k, m_heap[(slot - 1) / 2])) {
+            place(slot, m_heap[(slot - 1) / 2]);
+            slot = (slot - 1) / 2;
+        }
+        place(slot, k);
+    }
+}
+
+void TournamentTree::grow(std::uint32_t n) {
+    if (n <= m_n) return;
+    std::vector<Real> times(m_time.begin(), m_time.begin() + m_n);
+    reset(n);
+    for (std::uint32_t i = 0; i < times.size(); ++i) set(i, times[i]);
+}
+
+void CalendarQueue::grow(std::uint32_t n) {
+    // New particles at +infinity join the overflow list; bins and window are kept.
+    const auto old = static_cast<std::uint32_t>(m_node.size());
+    if (n <= old) return;
+    m_node.resize(n, Node{kNever, kNone, kNone});
+    for (std::uint32_t i = old; i < n; ++i) link(i, m_bins);
+    if (old == 0) {
+        m_top = 0;
+        settle();
+    }
+}
+
 void TournamentTree::reset(std::uint32_t n) {
     m_n = n;
     m_leaves = 1;
@@ -54,7 +91,7 @@ void TournamentTree::reset(std::uint32_t n) {
     for (std::uint32_t k = 0; k < m_leaves; ++k) m_node[m_leaves + k] = k;
     for (std::uint32_t k = m_leaves - 1; k >= 1; --k) {
         const std::uint32_t a = m_node[2 * k], b = m_node[2 * k + 1];
-        m_node[k] = earlier(m_time[b], b, m_time[a], a) ? b : a;
+        m_node[k] = m_tie.earlier(m_time[b], b, m_time[a], a) ? b : a;
     }
 }
 
@@ -62,7 +99,7 @@ void TournamentTree::set(std::uint32_t i, Real t) noexcept {
     m_time[i] = t;
     for (std::uint32_t k = (m_leaves + i) / 2; k >= 1; k /= 2) {
         const std::uint32_t a = m_node[2 * k], b = m_node[2 * k + 1];
-        m_node[k] = earlier(m_time[b], b, m_time[a], a) ? b : a;
+        m_node[k] = m_tie.earlier(m_time[b], b, m_time[a], a) ? b : a;
     }
 }
 
@@ -161,7 +198,7 @@ void CalendarQueue::settle() noexcept {
     std::uint32_t scanned = 0;
     for (std::uint32_t i = m_node[best].next; i != kNone; i = m_node[i].next) {
         ++scanned;
-        if (earlier(m_node[i].time, i, m_node[best].time, best)) best = i;
+        if (m_tie.earlier(m_node[i].time, i, m_node[best].time, best)) best = i;
     }
     m_top = best;
     m_topBin = bin;
@@ -178,7 +215,7 @@ void CalendarQueue::set(std::uint32_t i, Real t) noexcept {
     m_node[i].time = t;
     link(i, binOf(t));
     // The earliest event changes only if i was it or i now beats it.
-    if (i == m_top || earlier(t, i, m_node[m_top].time, m_top) || m_topBin != m_current) settle();
+    if (i == m_top || m_tie.earlier(t, i, m_node[m_top].time, m_top) || m_topBin != m_current) settle();
 }
 
 }  // namespace granulab::edmd

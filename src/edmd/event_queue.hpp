@@ -2,7 +2,8 @@
 // Event queues of the event-driven engine (edmd spec section 2.3): one future event per
 // particle, keyed by its time; the key of a particle is replaced (never removed) when its event
 // changes, stale events are recognised by the caller when they reach the top. Ties are broken
-// by the smaller particle index, so the event order is deterministic.
+// by the smaller tie key (the engine sets the global particle ids, setTieKeys; by default the
+// index), so the event order is deterministic and independent of storage slots and ranks.
 // Three implementations behind one interface (no virtual calls; the engine is a template on the
 // queue type):
 //  * AddressableHeap: implicit binary heap with heap_pos[particle] (the thesis' queue).
@@ -68,10 +69,24 @@ inline bool earlier(Real ta, std::uint32_t a, Real tb, std::uint32_t b) noexcept
     return ta < tb || (ta == tb && a < b);
 }
 
+/// The tie keys of a queue: key[i] orders events of equal time (null: the index itself).
+struct TieKeys {
+    const std::uint32_t* key = nullptr;
+    std::uint32_t operator()(std::uint32_t i) const noexcept { return key ? key[i] : i; }
+    /// (t, key) order of two entries; the key is read only on equal times (rare).
+    bool earlier(Real ta, std::uint32_t a, Real tb, std::uint32_t b) const noexcept {
+        return ta < tb || (ta == tb && (*this)(a) < (*this)(b));
+    }
+};
+
 class AddressableHeap {
 public:
     /// n particles, every time +infinity.
     void reset(std::uint32_t n);
+    /// Adds particles up to n (new ones at +infinity), keeping the others' times. O(added).
+    void grow(std::uint32_t n);
+    /// Orders equal times by key[i] (an array indexed like the queue; it must outlive the use).
+    void setTieKeys(const std::uint32_t* key) noexcept { m_tie.key = key; }
     /// Sets the event time of particle i [s] (decrease or increase key). O(log n).
     void set(std::uint32_t i, Real t) noexcept;
     /// Particle with the earliest event (ties: smallest index). O(1).
@@ -85,8 +100,9 @@ public:
 
 private:
     bool before(std::uint32_t a, std::uint32_t b) const noexcept {
-        return earlier(m_time[a], a, m_time[b], b);
+        return m_tie.earlier(m_time[a], a, m_time[b], b);
     }
+    TieKeys m_tie;
     void place(std::uint32_t slot, std::uint32_t particle) noexcept {
         m_heap[slot] = particle;
         m_pos[particle] = slot;
@@ -99,6 +115,8 @@ private:
 class TournamentTree {
 public:
     void reset(std::uint32_t n);
+    void grow(std::uint32_t n);
+    void setTieKeys(const std::uint32_t* key) noexcept { m_tie.key = key; }
     void set(std::uint32_t i, Real t) noexcept;
     std::uint32_t top() const noexcept { return m_node[1]; }
     Real topTime() const noexcept { return m_time[m_node[1]]; }
@@ -109,6 +127,7 @@ public:
     }
 
 private:
+    TieKeys m_tie;
     std::uint32_t m_n = 0, m_leaves = 1;  ///< particles; leaves (power of two >= n)
     BigVector<Real> m_time;               ///< [s] per particle, padded leaves at +infinity
     BigVector<std::uint32_t> m_node;      ///< 1-based tree: node k holds the winner of 2k, 2k+1
@@ -118,6 +137,8 @@ private:
 class CalendarQueue {
 public:
     void reset(std::uint32_t n);
+    void grow(std::uint32_t n);
+    void setTieKeys(const std::uint32_t* key) noexcept { m_tie.key = key; }
     void set(std::uint32_t i, Real t) noexcept;
     std::uint32_t top() const noexcept { return m_top; }
     Real topTime() const noexcept { return m_node[m_top].time; }
@@ -149,6 +170,7 @@ private:
         std::uint32_t next;  ///< list links (prev of a head: kHeadOf | bin)
         std::uint32_t prev;
     };
+    TieKeys m_tie;
     BigVector<Node> m_node;
     BigVector<std::uint32_t> m_head;  ///< first particle of each bin; [B] is the overflow list
     std::uint32_t m_bins = 1, m_current = 0, m_top = 0;

@@ -1,0 +1,551 @@
+// SPDX-License-Identifier: MIT
+// Records and the domain mode of the event-driven engine (edmd spec sections 3.4-3.8; checklist
+// items 35-40): an engine built from slot-independent particle records (rank-count-independent
+// checkpoints, rollback copies, migrations), and one rank's part of the parallel engine: the
+// owned cells (interior and border), the halo of virtual particles (copies of the neighbours'
+// border particles, no events of their own), a second queue of border events (events that can
+// touch another rank's particles), the records of changed border particles that go to the
+// neighbours, and received records applied at their own time in the global event order (time,
+// then id). Received records earlier than what this rank already did with that neighbourhood
+// are causality errors (spec 3.8 steps 5 and 6); the driver (edmd/parallel/parallel_engine.cpp)
+// then rolls every rank back.
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "core/error.hpp"
+#include "edmd/engine.hpp"
+
+namespace granulab::edmd {
+
+namespace {
+constexpr std::uint8_t kKindNone = 0, kKindParticle = 1, kKindCell = 2, kKindWall = 3, kKindPredict = 4;
+
+/// Min-heap order of pending records: earliest (tst, id) at the front.
+bool laterRecord(const ParticleRecord& a, const ParticleRecord& b) noexcept {
+    return EventKey{b.tst, b.id} < EventKey{a.tst, a.id};
+}
+}  // namespace
+
+template <int D, class Queue>
+Engine<D, Queue>::Engine(EngineConfig config, const DomainLayout& layout, const EngineGlobals& globals,
+                         std::vector<ParticleRecord> records)
+    : m_config(config) {
+    std::size_t cellCount = 1;
+    for (int d = 0; d < D; ++d) {
+        if (!(m_config.box[d] > 0)) throw std::invalid_argument("edmd::Engine: box edges must be positive");
+        if (layout.cells[d] < 1 || layout.cells[d] > kMaxCellsPerAxis)
+            throw std::invalid_argument("edmd::Engine: cells per axis out of range");
+        m_forcedCells[d] = layout.cells[d];
+        cellCount *= static_cast<std::size_t>(layout.cells[d]);
+    }
+    if (!layout.role.empty() && layout.role.size() != cellCount)
+        throw std::invalid_argument("edmd::Engine: the domain layout's roles do not match its grid");
+    const auto n = static_cast<std::uint32_t>(records.size());
+    const std::uint32_t idCount = layout.role.empty() ? n : layout.globalParticles;
+    m_config.restitution = globals.restitution;
+    m_config.wallRestitution = globals.wallRestitution;
+    m_config.tc = globals.tc;
+    m_config.growthRate = globals.growthRate;
+    m_now = globals.now;
+    m_stats = globals.stats;
+    m_virial = globals.virial;
+    m_dissipated = globals.dissipated;
+    for (int d = 0; d < D; ++d) m_gravity = m_gravity || m_config.gravity[d] != 0;
+    // Slots in cell order (neighbours close in memory), ties by id.
+    const auto cellKey = [&](const ParticleRecord& r) {
+        std::uint64_t k = 0, stride = 1;
+        for (int d = 0; d < D; ++d) {
+            k += stride * r.cell[d];
+            stride *= static_cast<std::uint64_t>(layout.cells[d]);
+        }
+        return k;
+    };
+    std::sort(records.begin(), records.end(), [&](const ParticleRecord& a, const ParticleRecord& b) {
+        const auto ka = cellKey(a), kb = cellKey(b);
+        return ka < kb || (ka == kb && a.id < b.id);
+    });
+    if (n) {
+        m_uniformRadius = records[0].radius0;
+        m_uniformMass = records[0].mass;
+    }
+    const bool equalRadii = std::all_of(records.begin(), records.end(), [&](const ParticleRecord& r) {
+        return r.radius0 == m_uniformRadius;
+    });
+    const bool equalMasses = std::all_of(records.begin(), records.end(),
+                                         [&](const ParticleRecord& r) { return r.mass == m_uniformMass; });
+    if (!equalRadii) m_radius.resize(n);
+    if (!equalMasses) m_mass.resize(n);
+    if (m_config.rough()) m_omega.assign(n, Vec3{});
+    if (m_config.tc > 0) m_lastCollision.assign(n, -kNoEvent);
+    m_s.resize(n);
+    m_event.assign(n, Event{});
+    m_cellOf.resize(n);
+    m_id.resize(n);
+    m_slot.assign(idCount, kNone);
+    for (std::uint32_t s = 0; s < n; ++s) {
+        const ParticleRecord& r = records[s];
+        if (r.id >= idCount || m_slot[r.id] != kNone)
+            throw std::invalid_argument("edmd::Engine: particle record with an id out of range or twice");
+        for (int d = 0; d < D; ++d)
+            if (r.cell[d] >= layout.cells[d])
+                throw std::invalid_argument("edmd::Engine: particle record in a cell outside the grid");
+        if (!(r.radius0 > 0) || !(r.mass > 0) || !std::isfinite(r.tst))
+            throw std::invalid_argument("edmd::Engine: particle record with a bad radius, mass or time");
+        m_id[s] = r.id;
+        m_slot[r.id] = s;
+        setFromRecord(s, r);
+        m_maxRadius0 = std::max(m_maxRadius0, r.radius0);
+    }
+    buildCells();  // the layout's grid; every slot's cell then comes from its record
+    for (std::uint32_t s = 0; s < n; ++s)
+        for (int d = 0; d < D; ++d) m_cellOf[s][d] = records[s].cell[d];
+    for (std::uint32_t s = n; s-- > 0;) linkCell(s);  // ascending slot order in every cell list
+    m_nextSort = m_stats.events + kSortEvery * std::max<std::uint64_t>(n, 1);
+    if (!layout.role.empty()) {
+        m_domain = std::make_unique<DomainData>();
+        m_domain->role = layout.role;
+        m_domain->cellEvents.assign(cellCount, 0);
+        m_domain->border.reset(n);
+        m_domain->border.setTieKeys(m_id.data());
+        m_domain->dead.assign(n, 0);
+    }
+    m_queue.reset(n);
+    m_queue.setTieKeys(m_id.data());
+    // Scheduled events as recorded (partners by id); kind 4 is predicted now, in slot order.
+    std::vector<std::uint32_t> predict;
+    for (std::uint32_t s = 0; s < n; ++s) {
+        if (!realSlot(s)) continue;
+        if (m_domain) ++m_domain->owned;
+        const ParticleRecord& r = records[s];
+        Event ev;
+        Real t = r.eventTime;
+        switch (r.eventKind) {
+            case kKindNone:
+                t = kNoEvent;
+                break;
+            case kKindParticle:
+                // A partner this rank does not hold cannot be met before the event (it would be
+                // in a neighbour cell); the event then only re-predicts at its time.
+                ev.partner = r.eventPartner < idCount ? m_slot[r.eventPartner] : kNone;
+                ev.partnerCounter = r.eventPartnerCounter;
+                break;
+            case kKindCell:
+            case kKindWall:
+                if (r.eventFace >= 2 * D)
+                    throw std::invalid_argument("edmd::Engine: particle record with a bad face");
+                ev.partner = (r.eventKind == kKindCell ? kCellBase : kWallBase) + r.eventFace;
+                break;
+            case kKindPredict:
+                predict.push_back(s);
+                continue;
+            default:
+                throw std::invalid_argument("edmd::Engine: particle record with an unknown event kind");
+        }
+        if (std::isnan(t) || t < m_now)
+            throw std::invalid_argument("edmd::Engine: particle record with an event in the past");
+        m_event[s] = ev;
+        m_queue.set(s, t);
+        if (m_domain) scheduleDomainBorder(s);
+    }
+    for (const std::uint32_t s : predict) m_domain ? scheduleDomain(s) : schedule(s);
+    resetWatchdog();
+}
+
+template <int D, class Queue>
+void Engine<D, Queue>::setFromRecord(std::uint32_t s, const ParticleRecord& r) {
+    State& p = m_s[s];
+    for (int d = 0; d < D; ++d) {
+        p.x[d] = r.x[d];
+        p.v[d] = r.v[d];
+    }
+    p.tst = r.tst;
+    p.counter = r.counter;
+    if (!m_radius.empty()) m_radius[s] = r.radius0;
+    if (!m_mass.empty()) m_mass[s] = r.mass;
+    if (!m_omega.empty()) m_omega[s] = Vec3{{r.omega[0], r.omega[1], r.omega[2]}};
+    if (!m_lastCollision.empty()) m_lastCollision[s] = r.lastCollision;
+    for (int d = 0; d < D; ++d) m_cellOf[s][d] = r.cell[d];
+}
+
+template <int D, class Queue>
+ParticleRecord Engine<D, Queue>::recordOf(std::uint32_t s) const {
+    ParticleRecord r;
+    const State& p = m_s[s];
+    r.id = m_id[s];
+    r.counter = p.counter;
+    for (int d = 0; d < D; ++d) {
+        r.cell[d] = m_cellOf[s][d];
+        r.x[d] = p.x[d];
+        r.v[d] = p.v[d];
+    }
+    r.tst = p.tst;
+    r.radius0 = m_radius.empty() ? m_uniformRadius : m_radius[s];
+    r.mass = massSlot(s);
+    if (!m_omega.empty())
+        for (int d = 0; d < 3; ++d) r.omega[d] = m_omega[s][d];
+    if (!m_lastCollision.empty()) r.lastCollision = m_lastCollision[s];
+    if (!realSlot(s)) return r;  // virtual copies carry no event (kind 4: predicted by the owner)
+    const Event& ev = m_event[s];
+    r.eventTime = m_queue.time(s);
+    if (ev.partner < kMaxParticles) {
+        r.eventKind = kKindParticle;
+        r.eventPartner = m_id[ev.partner];
+        r.eventPartnerCounter = ev.partnerCounter;
+    } else if (ev.partner == kNone) {
+        // No partner: +infinity is "no event"; a finite time re-predicts then (partner gone).
+        r.eventKind = r.eventTime == kNoEvent ? kKindNone : kKindParticle;
+        r.eventPartner = ~std::uint32_t{0};
+    } else if (ev.partner >= kCellBase) {
+        r.eventKind = kKindCell;
+        r.eventFace = static_cast<std::uint8_t>(ev.partner - kCellBase);
+    } else {
+        r.eventKind = kKindWall;
+        r.eventFace = static_cast<std::uint8_t>(ev.partner - kWallBase);
+    }
+    return r;
+}
+
+template <int D, class Queue>
+std::vector<ParticleRecord> Engine<D, Queue>::records(bool realOnly) const {
+    std::vector<ParticleRecord> out;
+    out.reserve(m_domain ? m_domain->owned : size());
+    for (std::uint32_t s = 0; s < size(); ++s) {
+        if (m_domain && m_domain->dead[s]) continue;
+        if (realOnly && !realSlot(s)) continue;
+        out.push_back(recordOf(s));
+    }
+    std::sort(out.begin(), out.end(),
+              [](const ParticleRecord& a, const ParticleRecord& b) { return a.id < b.id; });
+    return out;
+}
+
+template <int D, class Queue>
+EngineGlobals Engine<D, Queue>::globals() const {
+    EngineGlobals g;
+    g.now = m_now;
+    g.stats = m_stats;
+    g.virial = m_virial;
+    g.dissipated = m_dissipated;
+    g.restitution = m_config.restitution;
+    g.wallRestitution = m_config.wallRestitution;
+    g.tc = m_config.tc;
+    g.growthRate = m_config.growthRate;
+    return g;
+}
+
+template <int D, class Queue>
+std::uint32_t Engine<D, Queue>::cellIndexOf(const std::array<std::uint16_t, 3>& c) const noexcept {
+    std::uint32_t k = 0;
+    for (int d = 0; d < D; ++d) k += m_stride[d] * c[d];
+    return k;
+}
+
+template <int D, class Queue>
+CellRole Engine<D, Queue>::roleOf(std::uint32_t s) const noexcept {
+    return m_domain ? m_domain->role[cellIndex(m_cellOf[s])] : CellRole::Interior;
+}
+
+template <int D, class Queue>
+bool Engine<D, Queue>::realSlot(std::uint32_t s) const noexcept {
+    if (!m_domain) return true;
+    if (m_domain->dead[s]) return false;
+    const CellRole r = roleOf(s);
+    return r == CellRole::Interior || r == CellRole::Border;
+}
+
+template <int D, class Queue>
+std::uint32_t Engine<D, Queue>::ownedCount() const noexcept {
+    return m_domain ? m_domain->owned : size();
+}
+
+template <int D, class Queue>
+void Engine<D, Queue>::scheduleDomainBorder(std::uint32_t s) noexcept {
+    // A border event (spec 3.6): the particle is in a border cell, or its partner is in a border
+    // or halo cell, or it crosses into one. Only these can change what another rank sees.
+    DomainData& dom = *m_domain;
+    const Event& ev = m_event[s];
+    bool border = roleOf(s) == CellRole::Border;
+    if (!border && ev.partner < kMaxParticles) {
+        border = roleOf(ev.partner) != CellRole::Interior;
+    } else if (!border && ev.partner >= kCellBase && ev.partner != kNone) {
+        const std::uint32_t face = ev.partner - kCellBase;
+        const int d = static_cast<int>(face / 2);
+        CellCoords c = m_cellOf[s];
+        int k = c[d] + (face % 2 == 1 ? 1 : -1);
+        if (k == m_cells[d]) k = 0;
+        if (k < 0) k = m_cells[d] - 1;
+        c[d] = static_cast<std::uint16_t>(k);
+        border = dom.role[cellIndex(c)] != CellRole::Interior;
+    }
+    dom.border.set(s, border ? m_queue.time(s) : kNoEvent);
+}
+
+template <int D, class Queue>
+void Engine<D, Queue>::scheduleDomain(std::uint32_t s) noexcept {
+    // Predicting a border particle reads the virtual particles of the halo (spec 3.6).
+    if (roleOf(s) == CellRole::Border) m_domain->lastVirtualRead = m_now;
+    schedule(s);
+    scheduleDomainBorder(s);
+}
+
+template <int D, class Queue>
+void Engine<D, Queue>::noteChange(std::uint32_t s, std::uint32_t oldCell) {
+    const std::uint32_t newCell = cellIndex(m_cellOf[s]);
+    const auto& role = m_domain->role;
+    if (role[oldCell] == CellRole::Interior && role[newCell] == CellRole::Interior) return;
+    // Every change is sent, not only the last of a step: a neighbour applies each at its time.
+    m_domain->changes.push_back({recordOf(s), oldCell, newCell});
+}
+
+template <int D, class Queue>
+void Engine<D, Queue>::drainChanges(std::vector<Change>& out) {
+    out.clear();
+    if (m_domain) std::swap(out, m_domain->changes);
+}
+
+template <int D, class Queue>
+EventKey Engine<D, Queue>::nextKey() const noexcept {
+    EventKey k;
+    if (size() > 0) k = {m_queue.topTime(), m_id[m_queue.top()], 1};
+    if (m_domain && !m_domain->pending.empty()) {
+        const ParticleRecord& r = m_domain->pending.front();
+        k = std::min(k, EventKey{r.tst, r.id});
+    }
+    return k;
+}
+
+template <int D, class Queue>
+EventKey Engine<D, Queue>::nextBorderKey() const noexcept {
+    if (!m_domain) return nextKey();
+    EventKey k;
+    if (size() > 0) k = {m_domain->border.topTime(), m_id[m_domain->border.top()], 1};
+    if (!m_domain->pending.empty()) {
+        const ParticleRecord& r = m_domain->pending.front();
+        k = std::min(k, EventKey{r.tst, r.id});
+    }
+    return k;
+}
+
+template <int D, class Queue>
+Real Engine<D, Queue>::causalityError() const noexcept {
+    return m_domain ? m_domain->error : kNoEvent;
+}
+
+template <int D, class Queue>
+void Engine<D, Queue>::takeCellEvents(std::vector<std::uint64_t>& perCell) {
+    if (!m_domain) return;
+    perCell.resize(m_domain->cellEvents.size(), 0);
+    for (std::size_t c = 0; c < perCell.size(); ++c) {
+        perCell[c] += m_domain->cellEvents[c];
+        m_domain->cellEvents[c] = 0;
+    }
+}
+
+template <int D, class Queue>
+void Engine<D, Queue>::injectCausalityError(std::uint64_t events) noexcept {
+    if (m_domain) m_domain->injectAt = m_stats.events + events;
+}
+
+template <int D, class Queue>
+bool Engine<D, Queue>::receive(const ParticleRecord& r) {
+    DomainData& dom = *m_domain;
+    for (int d = 0; d < D; ++d)
+        if (r.cell[d] >= m_cells[d])
+            throw std::runtime_error("edmd: received a particle record outside the grid");
+    if (r.id >= m_slot.size())
+        throw std::runtime_error("edmd: received a particle record with an unknown id");
+    if (m_stats.events >= dom.injectAt) {  // test hook: this record is declared late
+        dom.injectAt = ~std::uint64_t{0};
+        dom.error = std::min(dom.error, m_now);
+        return false;
+    }
+    if (!(r.tst < m_now)) {
+        dom.pending.push_back(r);
+        std::push_heap(dom.pending.begin(), dom.pending.end(), laterRecord);
+        return true;
+    }
+    // Late. Harmless only for a virtual copy that no prediction has read since its time.
+    const CellRole role = dom.role[cellIndexOf(r.cell)];
+    const std::uint32_t s = m_slot[r.id];
+    const bool staysVirtual =
+        (role == CellRole::Halo || role == CellRole::Foreign) && (s == kNone || !realSlot(s));
+    if (staysVirtual && dom.lastVirtualRead <= r.tst) {
+        applyRecord(r);
+        return true;
+    }
+    dom.error = std::min(dom.error, r.tst);
+    return false;
+}
+
+template <int D, class Queue>
+std::uint32_t Engine<D, Queue>::addSlot(std::uint32_t id) {
+    const auto s = size();
+    if (s >= kMaxParticles - 1) throw std::runtime_error("edmd: too many particles on one rank");
+    m_s.emplace_back();
+    m_event.emplace_back();
+    m_cellOf.emplace_back();
+    m_id.push_back(id);
+    if (!m_radius.empty()) m_radius.push_back(m_uniformRadius);
+    if (!m_mass.empty()) m_mass.push_back(m_uniformMass);
+    if (!m_omega.empty()) m_omega.emplace_back();
+    if (!m_lastCollision.empty()) m_lastCollision.push_back(-kNoEvent);
+    m_domain->dead.push_back(0);
+    m_slot[id] = s;
+    m_queue.grow(s + 1);
+    m_domain->border.grow(s + 1);
+    m_queue.setTieKeys(m_id.data());  // m_id may have moved
+    m_domain->border.setTieKeys(m_id.data());
+    return s;
+}
+
+template <int D, class Queue>
+void Engine<D, Queue>::killSlot(std::uint32_t s) noexcept {
+    unlinkCell(s);
+    m_domain->dead[s] = 1;
+    ++m_s[s].counter;  // events that name this slot are annulled (spec 2.6)
+    m_slot[m_id[s]] = kNone;
+    m_queue.set(s, kNoEvent);
+    m_domain->border.set(s, kNoEvent);
+}
+
+template <int D, class Queue>
+std::uint32_t Engine<D, Queue>::applyRecord(const ParticleRecord& r) {
+    DomainData& dom = *m_domain;
+    const CellRole role = dom.role[cellIndexOf(r.cell)];
+    std::uint32_t s = m_slot[r.id];
+    if (role == CellRole::Foreign) {  // left this rank's cells and halo
+        if (s != kNone) {
+            if (realSlot(s)) --dom.owned;
+            killSlot(s);
+        }
+        return kNone;
+    }
+    const bool wasReal = s != kNone && realSlot(s);
+    if (s == kNone) {
+        s = addSlot(r.id);
+    } else {
+        unlinkCell(s);
+    }
+    // Radii and masses stored once when equal: a migrant that differs gets per-slot arrays.
+    if (m_radius.empty() && r.radius0 != m_uniformRadius) m_radius.assign(size(), m_uniformRadius);
+    if (m_mass.empty() && r.mass != m_uniformMass) m_mass.assign(size(), m_uniformMass);
+    setFromRecord(s, r);
+    linkCell(s);
+    if (role == CellRole::Halo) {
+        if (wasReal) --dom.owned;
+        m_queue.set(s, kNoEvent);
+        dom.border.set(s, kNoEvent);
+        return kNone;
+    }
+    if (!wasReal) ++dom.owned;
+    return s;
+}
+
+template <int D, class Queue>
+void Engine<D, Queue>::applyPending() {
+    // Every record of one instant first, then the predictions (a collision executed by a
+    // neighbour sends both partners' records; the prediction must see both).
+    DomainData& dom = *m_domain;
+    const Real t = dom.pending.front().tst;
+    m_now = std::max(m_now, t);
+    std::vector<std::uint32_t> predict;
+    while (!dom.pending.empty() && dom.pending.front().tst == t) {
+        std::pop_heap(dom.pending.begin(), dom.pending.end(), laterRecord);
+        const ParticleRecord r = dom.pending.back();
+        dom.pending.pop_back();
+        const std::uint32_t s = applyRecord(r);
+        if (s != kNone) predict.push_back(s);
+    }
+    for (const std::uint32_t s : predict)
+        if (realSlot(s)) scheduleDomain(s);
+}
+
+template <int D, class Queue>
+std::uint64_t Engine<D, Queue>::runDomain(EventKey limit) {
+    DomainData& dom = *m_domain;
+    std::uint64_t done = 0;
+    for (;;) {
+        const std::uint32_t i = size() > 0 ? m_queue.top() : 0;
+        const EventKey ev = size() > 0 ? EventKey{m_queue.topTime(), m_id[i], 1} : EventKey{};
+        if (!dom.pending.empty()) {
+            const EventKey up{dom.pending.front().tst, dom.pending.front().id};
+            if (up < ev) {
+                if (!(up < limit)) break;
+                applyPending();
+                continue;
+            }
+        }
+        if (!(ev < limit)) break;
+        const Real t = ev.time;
+        GL_ASSERT(t >= m_now && realSlot(i),
+                  "edmd::Engine: domain event in the past or of a virtual particle");
+        m_now = t;
+        ++done;
+        ++m_stats.events;
+        const Event e = m_event[i];
+        const std::uint32_t oldCell = cellIndex(m_cellOf[i]);
+        ++dom.cellEvents[oldCell];
+        if (e.partner < kMaxParticles) {
+            const std::uint32_t j = e.partner;
+            if (m_s[j].counter != e.partnerCounter) {  // annulled (spec 2.6)
+                ++m_stats.annulled;
+                advance(i, t);
+                noteChange(i, oldCell);
+                scheduleDomain(i);
+                continue;
+            }
+            const std::uint32_t oldCellJ = cellIndex(m_cellOf[j]);
+            collide(i, j, t);  // a virtual partner too: its owner gets the record (spec 3.8 step 5)
+            noteChange(i, oldCell);
+            noteChange(j, oldCellJ);
+            scheduleDomain(i);
+            if (realSlot(j)) scheduleDomain(j);
+        } else if (e.partner >= kCellBase && e.partner != kNone) {
+            advance(i, t);
+            crossCell(i, e.partner - kCellBase);
+            noteChange(i, oldCell);
+            if (realSlot(i)) {
+                scheduleDomain(i);
+            } else {  // migrated into a neighbour's cell: a virtual copy here from now on
+                --dom.owned;
+                m_queue.set(i, kNoEvent);
+                dom.border.set(i, kNoEvent);
+            }
+        } else if (e.partner >= kWallBase && e.partner < kCellBase) {
+            collideWall(i, e.partner - kWallBase, t);
+            noteChange(i, oldCell);
+            scheduleDomain(i);
+        } else {
+            scheduleDomain(i);
+        }
+    }
+    return done;
+}
+
+#define GRANULAB_EDMD_DOMAIN_MEMBERS(D, Q)                                                                \
+    template Engine<D, Q>::Engine(EngineConfig, const DomainLayout&, const EngineGlobals&,                \
+                                  std::vector<ParticleRecord>);                                           \
+    template std::vector<ParticleRecord> Engine<D, Q>::records(bool) const;                               \
+    template EngineGlobals Engine<D, Q>::globals() const;                                                 \
+    template std::uint32_t Engine<D, Q>::cellIndexOf(const std::array<std::uint16_t, 3>&) const noexcept; \
+    template EventKey Engine<D, Q>::nextKey() const noexcept;                                             \
+    template EventKey Engine<D, Q>::nextBorderKey() const noexcept;                                       \
+    template std::uint64_t Engine<D, Q>::runDomain(EventKey);                                             \
+    template bool Engine<D, Q>::receive(const ParticleRecord&);                                           \
+    template Real Engine<D, Q>::causalityError() const noexcept;                                          \
+    template void Engine<D, Q>::drainChanges(std::vector<Change>&);                                       \
+    template std::uint32_t Engine<D, Q>::ownedCount() const noexcept;                                     \
+    template void Engine<D, Q>::injectCausalityError(std::uint64_t) noexcept;                             \
+    template void Engine<D, Q>::takeCellEvents(std::vector<std::uint64_t>&);                              \
+    template bool Engine<D, Q>::realSlot(std::uint32_t) const noexcept;
+
+GRANULAB_EDMD_DOMAIN_MEMBERS(2, AddressableHeap)
+GRANULAB_EDMD_DOMAIN_MEMBERS(2, TournamentTree)
+GRANULAB_EDMD_DOMAIN_MEMBERS(2, CalendarQueue)
+GRANULAB_EDMD_DOMAIN_MEMBERS(3, AddressableHeap)
+GRANULAB_EDMD_DOMAIN_MEMBERS(3, TournamentTree)
+GRANULAB_EDMD_DOMAIN_MEMBERS(3, CalendarQueue)
+#undef GRANULAB_EDMD_DOMAIN_MEMBERS
+
+}  // namespace granulab::edmd
