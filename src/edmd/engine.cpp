@@ -174,8 +174,7 @@ void Engine<D, Queue>::buildCells() {
     m_cellOf.resize(n);
     for (std::uint32_t s = 0; s < n; ++s)
         for (int d = 0; d < D; ++d)
-            m_cellOf[s][d] = static_cast<std::uint16_t>(
-                std::clamp(static_cast<int>(std::floor(m_s[s].x[d] * m_invCellEdge[d])), 0, m_cells[d] - 1));
+            m_cellOf[s][d] = cellCoordinate(m_s[s].x[d], m_invCellEdge[d], m_cells[d]);
 }
 
 template <int D, class Queue>

@@ -8,6 +8,7 @@
 // model, growing or shrinking spheres, polydisperse radii and masses. Output by extrapolation
 // (no state change), checkpoints bit for bit.
 #pragma once
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -61,6 +62,13 @@ struct EngineStats {
 /// axis holds fewer than 3 cells.
 template <int D>
 std::array<int, 3> chooseCellGrid(const EngineConfig& config, std::uint32_t n, Real amax);
+
+/// Cell coordinate along one axis of a position x [m] on a grid of `cells` cells of inverse
+/// edge invEdge = cells / L [1/m], clamped to the grid: the one rounding that the serial and the
+/// parallel engine both use, so that they put every particle in the same cell.
+inline std::uint16_t cellCoordinate(Real x, Real invEdge, int cells) noexcept {
+    return static_cast<std::uint16_t>(std::clamp(static_cast<int>(std::floor(x * invEdge)), 0, cells - 1));
+}
 
 /// Position of an event in the global order: time, then the particle's global id (edmd spec
 /// 3.8 [I]: ties broken by id, so that serial and parallel runs execute the same order).
@@ -211,7 +219,6 @@ public:
     /// Every particle's record (owned ones only if realOnly), sorted by id; events as scheduled.
     std::vector<ParticleRecord> records(bool realOnly) const;
     EngineGlobals globals() const;
-    bool distributed() const noexcept { return m_domain != nullptr; }
     /// Cell index of cell coordinates (x fastest), as in DomainLayout::role.
     std::uint32_t cellIndexOf(const std::array<std::uint16_t, 3>& c) const noexcept;
     /// The next event or received update, and the next one that can touch another rank's
@@ -235,8 +242,7 @@ public:
     };
     /// Moves the changes since the last call to `out` (cleared first), in the order made.
     void drainChanges(std::vector<Change>& out);
-    /// Owned particles, kinetic energy [J] (translational + rotational), momentum of the owned
-    /// particles at the current time (one rank's share of the global sums).
+    /// Particles this engine owns (domain mode: those in its own cells; else all).
     std::uint32_t ownedCount() const noexcept;
     /// Sets the clock to t >= time() (all events up to t done): the end of a parallel section.
     void setTime(Real t) noexcept { m_now = std::max(m_now, t); }
@@ -415,7 +421,6 @@ private:
         std::vector<std::uint32_t> cellEvents;  ///< per cell index: events since takeCellEvents
         AddressableHeap border;                 ///< per slot: the time of its event if a border event
         std::vector<std::uint8_t> dead;         ///< per slot: left this rank's cells (slot not reused)
-        std::vector<std::uint32_t> changedAt;   ///< per slot: index in `changes` + 1 (0: unchanged)
         std::vector<Change> changes;
         std::vector<ParticleRecord> pending;         ///< received updates, a min-heap by (tst, id)
         Real lastVirtualRead = -kNoEvent;            ///< [s] last time a border particle was predicted

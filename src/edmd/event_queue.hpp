@@ -64,11 +64,6 @@ struct BigArrayAllocator {
 template <class T>
 using BigVector = std::vector<T, BigArrayAllocator<T>>;
 
-/// An event time t [s] of particle i; (t, i) order.
-inline bool earlier(Real ta, std::uint32_t a, Real tb, std::uint32_t b) noexcept {
-    return ta < tb || (ta == tb && a < b);
-}
-
 /// The tie keys of a queue: key[i] orders events of equal time (null: the index itself).
 struct TieKeys {
     const std::uint32_t* key = nullptr;

@@ -46,12 +46,14 @@ ByteBuffer packRecords(const std::vector<ParticleRecord>& records) {
     return b;
 }
 
-void unpackRecords(const ByteBuffer& b, std::vector<ParticleRecord>& out) {
-    if (b.size() % sizeof(ParticleRecord) != 0) throw std::runtime_error("edmd parallel: bad record message");
-    const std::size_t n = b.size() / sizeof(ParticleRecord);
+/// Appends the records held in b from byte `from` on to `out`.
+void unpackRecords(const ByteBuffer& b, std::vector<ParticleRecord>& out, std::size_t from = 0) {
+    const std::size_t bytes = b.size() - std::min(from, b.size());
+    if (bytes % sizeof(ParticleRecord) != 0) throw std::runtime_error("edmd parallel: bad record message");
+    const std::size_t n = bytes / sizeof(ParticleRecord);
     const std::size_t at = out.size();
     out.resize(at + n);
-    if (n) std::memcpy(out.data() + at, b.data(), b.size());
+    if (n) std::memcpy(out.data() + at, b.data() + from, bytes);
 }
 
 double elapsedSince(double t0) {
@@ -127,11 +129,8 @@ void ParallelEngine<D>::start(const EngineGlobals& globals, std::vector<Particle
     // Cells of records that carry no cell yet (the initial state) from their positions.
     for (auto& r : all)
         if (r.eventKind == 4 && r.tst == globals.now)
-            for (int d = 0; d < D; ++d) {
-                const Real u = r.x[d] * (m_cells[d] / m_config.box[d]);  // the serial engine's rounding
-                r.cell[d] = static_cast<std::uint16_t>(
-                    std::clamp(static_cast<int>(std::floor(u)), 0, m_cells[d] - 1));
-            }
+            for (int d = 0; d < D; ++d)
+                r.cell[d] = cellCoordinate(r.x[d], m_cells[d] / m_config.box[d], m_cells[d]);
     m_barrier = globals.now;
     buildLayout();
     distribute(std::move(all), true, globals);
@@ -162,37 +161,37 @@ std::array<int, 3> ParallelEngine<D>::coordsOf(std::uint32_t cell) const noexcep
 }
 
 template <int D>
-void ParallelEngine<D>::recipients(std::uint32_t cell, std::vector<int>& out) const {
-    // The ranks that own a cell of the 3^D neighbourhood hold this cell as their own or in their
-    // halo; every change of a particle in it goes to them.
+template <class Visit>
+void ParallelEngine<D>::forEachCellAround(std::uint32_t cell, Visit&& visit) const {
     const std::array<int, 3> c = coordsOf(cell);
-    int lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
-    for (int d = 0; d < D; ++d) {
-        lo[d] = -1;
-        hi[d] = 1;
-    }
-    for (int dz = lo[2]; dz <= hi[2]; ++dz)
-        for (int dy = lo[1]; dy <= hi[1]; ++dy)
-            for (int dx = lo[0]; dx <= hi[0]; ++dx) {
+    const int reach[3] = {1, 1, D == 3 ? 1 : 0};
+    for (int dz = -reach[2]; dz <= reach[2]; ++dz)
+        for (int dy = -reach[1]; dy <= reach[1]; ++dy)
+            for (int dx = -reach[0]; dx <= reach[0]; ++dx) {
                 const int delta[3] = {dx, dy, dz};
                 std::uint32_t index = 0, stride = 1;
                 bool inside = true;
-                for (int d = 0; d < D; ++d) {
+                for (int d = 0; d < D && inside; ++d) {
                     int k = c[d] + delta[d];
                     if (k < 0 || k >= m_cells[d]) {
-                        if (!m_config.periodic[d]) {
-                            inside = false;
-                            break;
-                        }
+                        inside = m_config.periodic[d];
                         k = (k + m_cells[d]) % m_cells[d];
                     }
                     index += stride * static_cast<std::uint32_t>(k);
                     stride *= static_cast<std::uint32_t>(m_cells[d]);
                 }
-                if (!inside) continue;
-                const int r = m_owner[index];
-                if (r != m_comm.rank() && std::find(out.begin(), out.end(), r) == out.end()) out.push_back(r);
+                if (inside) visit(index);
             }
+}
+
+template <int D>
+void ParallelEngine<D>::recipients(std::uint32_t cell, std::vector<int>& out) const {
+    // The ranks that own a cell of the 3^D neighbourhood hold this cell as their own or in their
+    // halo; every change of a particle in it goes to them.
+    forEachCellAround(cell, [&](std::uint32_t index) {
+        const int r = m_owner[index];
+        if (r != m_comm.rank() && std::find(out.begin(), out.end(), r) == out.end()) out.push_back(r);
+    });
 }
 
 template <int D>
@@ -212,58 +211,32 @@ void ParallelEngine<D>::buildLayout() {
     m_layout.globalParticles = m_globalCount;
     m_neighbourIndex.assign(static_cast<std::size_t>(m_comm.size()), -1);
     m_neighbours.clear();
+    // One pass: the other ranks around each cell, and whether this rank owns a cell there. A
+    // change of a virtual particle (a collision executed here, a migration out) goes to every
+    // rank around its halo cell, so the neighbours are the ranks around the halo cells (within
+    // two cells of this rank's own): records go directly, never forwarded (a forwarded record
+    // would arrive late).
     std::vector<int> around;
     for (std::size_t cell = 0; cell < count; ++cell) {
         around.clear();
-        recipients(static_cast<std::uint32_t>(cell), around);  // ranks other than me around it
-        const bool mine = m_owner[cell] == me;
-        bool touchesMine = mine;
-        if (!mine) {  // is any neighbour cell mine? (recipients() leaves me out, so look again)
-            const std::array<int, 3> c = coordsOf(static_cast<std::uint32_t>(cell));
-            for (int dz = (D == 3 ? -1 : 0); dz <= (D == 3 ? 1 : 0) && !touchesMine; ++dz)
-                for (int dy = -1; dy <= 1 && !touchesMine; ++dy)
-                    for (int dx = -1; dx <= 1 && !touchesMine; ++dx) {
-                        const int delta[3] = {dx, dy, dz};
-                        std::uint32_t index = 0, stride = 1;
-                        bool inside = true;
-                        for (int d = 0; d < D; ++d) {
-                            int k = c[d] + delta[d];
-                            if (k < 0 || k >= m_cells[d]) {
-                                if (!m_config.periodic[d]) {
-                                    inside = false;
-                                    break;
-                                }
-                                k = (k + m_cells[d]) % m_cells[d];
-                            }
-                            index += stride * static_cast<std::uint32_t>(k);
-                            stride *= static_cast<std::uint32_t>(m_cells[d]);
-                        }
-                        touchesMine = inside && m_owner[index] == me;
-                    }
-        }
-        if (mine) {
+        bool touchesMine = false;
+        forEachCellAround(static_cast<std::uint32_t>(cell), [&](std::uint32_t index) {
+            const int r = m_owner[index];
+            if (r == me)
+                touchesMine = true;
+            else if (std::find(around.begin(), around.end(), r) == around.end())
+                around.push_back(r);
+        });
+        if (m_owner[cell] == me) {
             m_layout.role[cell] = around.empty() ? CellRole::Interior : CellRole::Border;
         } else if (touchesMine) {
             m_layout.role[cell] = CellRole::Halo;
-            const int r = m_owner[cell];
-            if (m_neighbourIndex[static_cast<std::size_t>(r)] < 0) {
-                m_neighbourIndex[static_cast<std::size_t>(r)] = 0;
-                m_neighbours.push_back(r);
-            }
+            for (const int r : around)  // the cell's owner is among them
+                if (m_neighbourIndex[static_cast<std::size_t>(r)] < 0) {
+                    m_neighbourIndex[static_cast<std::size_t>(r)] = 0;
+                    m_neighbours.push_back(r);
+                }
         }
-    }
-    // A change of a virtual particle (a collision executed here, a migration out) goes to every
-    // rank around its halo cell, so the neighbours are the ranks within two cells of this rank's
-    // cells: messages go directly, never forwarded (a forwarded record would arrive late).
-    for (std::size_t cell = 0; cell < count; ++cell) {
-        if (m_layout.role[cell] != CellRole::Halo) continue;
-        around.clear();
-        recipients(static_cast<std::uint32_t>(cell), around);
-        for (const int r : around)
-            if (m_neighbourIndex[static_cast<std::size_t>(r)] < 0) {
-                m_neighbourIndex[static_cast<std::size_t>(r)] = 0;
-                m_neighbours.push_back(r);
-            }
     }
     std::sort(m_neighbours.begin(), m_neighbours.end());
     for (std::size_t k = 0; k < m_neighbours.size(); ++k)
@@ -275,7 +248,6 @@ template <int D>
 void ParallelEngine<D>::distribute(std::vector<ParticleRecord> owned, bool everyRecord,
                                    const EngineGlobals& globals) {
     const double t0 = wallSeconds();
-    const int me = m_comm.rank();
     const auto cellOf = [this](const ParticleRecord& r) {
         std::uint32_t index = 0, stride = 1;
         for (int d = 0; d < D; ++d) {
@@ -314,7 +286,6 @@ void ParallelEngine<D>::distribute(std::vector<ParticleRecord> owned, bool every
         for (auto& c : copies) buffers.push_back(packRecords(c));
         local = std::move(mine);
         for (const auto& b : m_comm.allToAll(std::move(buffers))) unpackRecords(b, local);
-        (void)me;
     }
     m_kernel = std::make_unique<Kernel>(m_config, m_layout, globals, std::move(local));
     m_stats.rebuildSeconds += elapsedSince(t0);
@@ -381,8 +352,7 @@ void ParallelEngine<D>::exchange(std::vector<EventKey>* sentMin, std::vector<Eve
         const auto h = readAt<StepHeader>(b, 0);
         if (announced) (*announced)[k] = {h.announceTime, h.announceId, h.announceKind};
         in.clear();
-        const ByteBuffer rest(b.begin() + sizeof(StepHeader), b.end());
-        unpackRecords(rest, in);
+        unpackRecords(b, in, sizeof(StepHeader));
         if (in.size() != h.count) throw std::runtime_error("edmd parallel: record count mismatch");
         for (const auto& r : in) m_kernel->receive(r);  // an error is remembered by the kernel
     }
@@ -440,10 +410,8 @@ Real ParallelEngine<D>::runCareful(Real target, Real past) {
         std::array<double, 1> id{next.time == t[0] ? 2.0 * next.id + next.kind : kNoEvent};
         m_comm.allMin(id);
         m_stats.communicationSeconds += elapsedSince(t0);
-        if (!(t[0] < target) || t[0] > past) {
-            exchange(nullptr, nullptr);  // nothing changed since the last one; keeps ranks paired
-            return std::min(t[0], target);
-        }
+        // Every rank decides alike, right after an exchange: no record is in flight.
+        if (!(t[0] < target) || t[0] > past) return std::min(t[0], target);
         if (next.time == t[0] && 2.0 * next.id + next.kind == id[0])
             m_kernel->runDomain(EventKey{next.time, next.id, next.kind + 1});
     }

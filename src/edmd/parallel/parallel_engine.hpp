@@ -41,7 +41,6 @@ struct ParallelConfig {
 struct ParallelStats {
     std::uint64_t sections = 0;         ///< sections completed (barriers passed)
     std::uint64_t rollbacks = 0;        ///< sections aborted by a causality error
-    std::uint64_t forcedErrors = 0;     ///< of these, forced by the test hook
     std::uint64_t carefulSections = 0;  ///< sections repeated in event-by-event order (error at a barrier)
     std::uint64_t steps = 0;            ///< communication phases
     std::uint64_t recordsSent = 0;      ///< particle records sent to neighbours
@@ -98,7 +97,6 @@ public:
     Real syncInterval() const noexcept { return m_interval; }
 
 private:
-    struct Layout;
     void start(const EngineGlobals& globals, std::vector<ParticleRecord> all);
     void buildLayout();
     /// Redistributes the owned records of every rank by the current map (plus halo copies) and
@@ -114,6 +112,10 @@ private:
     void commitBarrier(Real t);
     void rollback();
     void balance();
+    /// Calls visit(cell index) for every cell of the 3^D block around `cell` (itself included;
+    /// periodic axes wrap, walls cut the block).
+    template <class Visit>
+    void forEachCellAround(std::uint32_t cell, Visit&& visit) const;
     void recipients(std::uint32_t cell, std::vector<int>& out) const;
     std::array<int, 3> coordsOf(std::uint32_t cell) const noexcept;
 
