@@ -12,6 +12,7 @@
 #include "app/engine_table.hpp"
 #include "app/run_loop.hpp"
 #include "app/simulation_options.hpp"
+#include "core/communicator.hpp"
 #include "core/error.hpp"
 #include "core/timer.hpp"
 #include "io/output_folder.hpp"
@@ -83,6 +84,14 @@ std::string defaultOutDir(const std::string& scenePath) {
 
 int runCommand(const RunOptions& opt) {
     const double startWall = wallSeconds();
+    // No engine runs on several MPI ranks through `granulab run` yet (issue 15): every rank would
+    // run the whole scene into the same output folder. Refused on every rank alike (exit 2).
+    if (const int ranks = worldCommunicator().size(); ranks > 1)
+        throw SceneError(
+            makeDiagnostic(opt.scene, 0, "",
+                           fmt::format("granulab run was started on {} MPI ranks; runs on several "
+                                       "ranks are not available yet: start it without mpirun",
+                                       ranks)));
     // SceneError -> exit 2 in main; problems of --set values are located at the --set.
     const model::SceneDef scene =
         io::withOverrideLocations(opt.overrides, [&] { return app::readScene(opt.scene, opt.overrides); });
