@@ -227,16 +227,16 @@ void Engine<D, Queue>::sortParticles(bool requeue) {
         m_head[c] = s;
     }
     if (requeue) {
-        m_queue.reset(n);
         m_queue.setTieKeys(m_id.data());
+        m_queue.reset(n);
         for (std::uint32_t s = 0; s < n; ++s) m_queue.set(s, times[s]);
     }
 }
 
 template <int D, class Queue>
 void Engine<D, Queue>::rescheduleAll() noexcept {
+    m_queue.setTieKeys(m_id.data());  // before reset, which already compares keys
     m_queue.reset(size());
-    m_queue.setTieKeys(m_id.data());
     for (std::uint32_t s = 0; s < size(); ++s) schedule(s);
 }
 
@@ -921,8 +921,8 @@ void Engine<D, Queue>::loadState(std::istream& is) {
         m_slot[id[s]] = s;
     }
     m_id.assign(id.begin(), id.end());
-    m_queue.reset(n);
     m_queue.setTieKeys(m_id.data());
+    m_queue.reset(n);
     for (std::uint32_t s = 0; s < n; ++s) m_queue.set(s, times[s]);
     resetWatchdog();
 }

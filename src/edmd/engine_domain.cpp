@@ -106,12 +106,12 @@ Engine<D, Queue>::Engine(EngineConfig config, const DomainLayout& layout, const 
         m_domain = std::make_unique<DomainData>();
         m_domain->role = layout.role;
         m_domain->cellEvents.assign(cellCount, 0);
-        m_domain->border.reset(n);
         m_domain->border.setTieKeys(m_id.data());
+        m_domain->border.reset(n);
         m_domain->dead.assign(n, 0);
     }
-    m_queue.reset(n);
     m_queue.setTieKeys(m_id.data());
+    m_queue.reset(n);
     // Scheduled events as recorded (partners by id); kind 4 is predicted now, in slot order.
     std::vector<std::uint32_t> predict;
     for (std::uint32_t s = 0; s < n; ++s) {
@@ -392,10 +392,10 @@ std::uint32_t Engine<D, Queue>::addSlot(std::uint32_t id) {
     if (!m_lastCollision.empty()) m_lastCollision.push_back(-kNoEvent);
     m_domain->dead.push_back(0);
     m_slot[id] = s;
+    m_queue.setTieKeys(m_id.data());  // m_id may have moved; grow already compares keys
+    m_domain->border.setTieKeys(m_id.data());
     m_queue.grow(s + 1);
     m_domain->border.grow(s + 1);
-    m_queue.setTieKeys(m_id.data());  // m_id may have moved
-    m_domain->border.setTieKeys(m_id.data());
     return s;
 }
 

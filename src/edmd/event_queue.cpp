@@ -91,7 +91,7 @@ void TournamentTree::reset(std::uint32_t n) {
     for (std::uint32_t k = 0; k < m_leaves; ++k) m_node[m_leaves + k] = k;
     for (std::uint32_t k = m_leaves - 1; k >= 1; --k) {
         const std::uint32_t a = m_node[2 * k], b = m_node[2 * k + 1];
-        m_node[k] = m_tie.earlier(m_time[b], b, m_time[a], a) ? b : a;
+        m_node[k] = before(b, a) ? b : a;
     }
 }
 
@@ -99,7 +99,7 @@ void TournamentTree::set(std::uint32_t i, Real t) noexcept {
     m_time[i] = t;
     for (std::uint32_t k = (m_leaves + i) / 2; k >= 1; k /= 2) {
         const std::uint32_t a = m_node[2 * k], b = m_node[2 * k + 1];
-        m_node[k] = m_tie.earlier(m_time[b], b, m_time[a], a) ? b : a;
+        m_node[k] = before(b, a) ? b : a;
     }
 }
 

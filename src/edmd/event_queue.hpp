@@ -122,6 +122,12 @@ public:
     }
 
 private:
+    /// Whether leaf b's event comes before leaf a's; the padding leaves (index >= n, no tie key)
+    /// come after every particle of equal time.
+    bool before(std::uint32_t b, std::uint32_t a) const noexcept {
+        if (m_time[b] != m_time[a]) return m_time[b] < m_time[a];
+        return (b < m_n ? m_tie(b) : ~std::uint32_t{0}) < (a < m_n ? m_tie(a) : ~std::uint32_t{0});
+    }
     TieKeys m_tie;
     std::uint32_t m_n = 0, m_leaves = 1;  ///< particles; leaves (power of two >= n)
     BigVector<Real> m_time;               ///< [s] per particle, padded leaves at +infinity
