@@ -227,6 +227,10 @@ public:
     EventKey nextBorderKey() const noexcept;
     /// Executes events and received updates in key order while their key is below `limit`.
     std::uint64_t runDomain(EventKey limit);
+    /// Applies every received update of time <= t [s] (a section that ended inside an instant,
+    /// after the k-th collision: the partner's record made by it is applied, as in the serial
+    /// engine, while the events after it wait).
+    void applyReceivedUntil(Real t);
     /// A neighbour's record of a particle in an owned or halo cell (or that left them), applied
     /// at its time tst in key order (queued; applied at once when it is a late virtual copy
     /// that nothing has read since). Returns false on a causality error (spec 3.8 steps 5-6):
@@ -252,6 +256,9 @@ public:
     /// Simulated causality error (tests of the rollback): the first record received after
     /// `events` more local events is treated as late.
     void injectCausalityError(std::uint64_t events) noexcept;
+    /// Appends the key of every particle collision executed from now on to `log` (nullptr: no
+    /// log): the parallel engine's collision-count stops find the k-th collision of a section.
+    void setCollisionLog(std::vector<EventKey>* log) noexcept;
 
 private:
     struct DomainData;
@@ -416,16 +423,22 @@ private:
     std::unique_ptr<DomainData> m_domain;  ///< domain mode only
 
     /// Per-rank data of the domain mode (engine_domain.cpp).
+    struct PendingRecord {
+        ParticleRecord record;
+        std::uint64_t arrival = 0;
+    };
     struct DomainData {
         std::vector<CellRole> role;             ///< per cell index
         std::vector<std::uint32_t> cellEvents;  ///< per cell index: events since takeCellEvents
         AddressableHeap border;                 ///< per slot: the time of its event if a border event
         std::vector<std::uint8_t> dead;         ///< per slot: left this rank's cells (slot not reused)
         std::vector<Change> changes;
-        std::vector<ParticleRecord> pending;         ///< received updates, a min-heap by (tst, id)
+        std::vector<PendingRecord> pending;          ///< received updates, a min-heap by (tst, id, arrival)
+        std::uint64_t arrivals = 0;                  ///< records received so far (the arrival order)
         Real lastVirtualRead = -kNoEvent;            ///< [s] last time a border particle was predicted
         Real error = kNoEvent;                       ///< [s] earliest causality error
         std::uint64_t injectAt = ~std::uint64_t{0};  ///< test hook: event count of a forced error
+        std::vector<EventKey>* collisionLog = nullptr;  ///< keys of executed collisions (optional)
         std::uint32_t owned = 0;
     };
 };

@@ -21,9 +21,13 @@ namespace granulab::edmd {
 namespace {
 constexpr std::uint8_t kKindNone = 0, kKindParticle = 1, kKindCell = 2, kKindWall = 3, kKindPredict = 4;
 
-/// Min-heap order of pending records: earliest (tst, id) at the front.
-bool laterRecord(const ParticleRecord& a, const ParticleRecord& b) noexcept {
-    return EventKey{b.tst, b.id} < EventKey{a.tst, a.id};
+/// Min-heap order of pending records: earliest (tst, id) at the front, then in arrival order
+/// (several records of one particle at one instant, dt = 0 events such as a crossing of two
+/// faces at a cell corner, are applied in the order they were made).
+template <class Pending>
+bool laterRecord(const Pending& a, const Pending& b) noexcept {
+    const EventKey ka{a.record.tst, a.record.id}, kb{b.record.tst, b.record.id};
+    return kb < ka || (!(ka < kb) && b.arrival < a.arrival);
 }
 }  // namespace
 
@@ -309,7 +313,7 @@ EventKey Engine<D, Queue>::nextKey() const noexcept {
     EventKey k;
     if (size() > 0) k = {m_queue.topTime(), m_id[m_queue.top()], 1};
     if (m_domain && !m_domain->pending.empty()) {
-        const ParticleRecord& r = m_domain->pending.front();
+        const ParticleRecord& r = m_domain->pending.front().record;
         k = std::min(k, EventKey{r.tst, r.id});
     }
     return k;
@@ -321,7 +325,7 @@ EventKey Engine<D, Queue>::nextBorderKey() const noexcept {
     EventKey k;
     if (size() > 0) k = {m_domain->border.topTime(), m_id[m_domain->border.top()], 1};
     if (!m_domain->pending.empty()) {
-        const ParticleRecord& r = m_domain->pending.front();
+        const ParticleRecord& r = m_domain->pending.front().record;
         k = std::min(k, EventKey{r.tst, r.id});
     }
     return k;
@@ -348,6 +352,11 @@ void Engine<D, Queue>::injectCausalityError(std::uint64_t events) noexcept {
 }
 
 template <int D, class Queue>
+void Engine<D, Queue>::setCollisionLog(std::vector<EventKey>* log) noexcept {
+    if (m_domain) m_domain->collisionLog = log;
+}
+
+template <int D, class Queue>
 bool Engine<D, Queue>::receive(const ParticleRecord& r) {
     DomainData& dom = *m_domain;
     for (int d = 0; d < D; ++d)
@@ -361,8 +370,8 @@ bool Engine<D, Queue>::receive(const ParticleRecord& r) {
         return false;
     }
     if (!(r.tst < m_now)) {
-        dom.pending.push_back(r);
-        std::push_heap(dom.pending.begin(), dom.pending.end(), laterRecord);
+        dom.pending.push_back({r, dom.arrivals++});
+        std::push_heap(dom.pending.begin(), dom.pending.end(), laterRecord<PendingRecord>);
         return true;
     }
     // Late. Harmless only for a virtual copy that no prediction has read since its time.
@@ -447,18 +456,24 @@ void Engine<D, Queue>::applyPending() {
     // Every record of one instant first, then the predictions (a collision executed by a
     // neighbour sends both partners' records; the prediction must see both).
     DomainData& dom = *m_domain;
-    const Real t = dom.pending.front().tst;
+    const Real t = dom.pending.front().record.tst;
     m_now = std::max(m_now, t);
     std::vector<std::uint32_t> predict;
-    while (!dom.pending.empty() && dom.pending.front().tst == t) {
-        std::pop_heap(dom.pending.begin(), dom.pending.end(), laterRecord);
-        const ParticleRecord r = dom.pending.back();
+    while (!dom.pending.empty() && dom.pending.front().record.tst == t) {
+        std::pop_heap(dom.pending.begin(), dom.pending.end(), laterRecord<PendingRecord>);
+        const ParticleRecord r = dom.pending.back().record;
         dom.pending.pop_back();
         const std::uint32_t s = applyRecord(r);
         if (s != kNone) predict.push_back(s);
     }
     for (const std::uint32_t s : predict)
         if (realSlot(s)) scheduleDomain(s);
+}
+
+template <int D, class Queue>
+void Engine<D, Queue>::applyReceivedUntil(Real t) {
+    while (m_domain && !m_domain->pending.empty() && m_domain->pending.front().record.tst <= t)
+        applyPending();
 }
 
 template <int D, class Queue>
@@ -469,7 +484,7 @@ std::uint64_t Engine<D, Queue>::runDomain(EventKey limit) {
         const std::uint32_t i = size() > 0 ? m_queue.top() : 0;
         const EventKey ev = size() > 0 ? EventKey{m_queue.topTime(), m_id[i], 1} : EventKey{};
         if (!dom.pending.empty()) {
-            const EventKey up{dom.pending.front().tst, dom.pending.front().id};
+            const EventKey up{dom.pending.front().record.tst, dom.pending.front().record.id};
             if (up < ev) {
                 if (!(up < limit)) break;
                 applyPending();
@@ -497,6 +512,7 @@ std::uint64_t Engine<D, Queue>::runDomain(EventKey limit) {
             }
             const std::uint32_t oldCellJ = cellIndex(m_cellOf[j]);
             collide(i, j, t);  // a virtual partner too: its owner gets the record (spec 3.8 step 5)
+            if (dom.collisionLog) dom.collisionLog->push_back(ev);
             noteChange(i, oldCell);
             noteChange(j, oldCellJ);
             scheduleDomain(i);
@@ -517,6 +533,12 @@ std::uint64_t Engine<D, Queue>::runDomain(EventKey limit) {
             noteChange(i, oldCell);
             scheduleDomain(i);
         } else {
+            // A collision whose partner this rank no longer held when it was rebuilt from
+            // records (kind 1, partner gone): that partner has collided since (a valid partner
+            // stays within the 3^D cells), so the serial engine annuls the event here.
+            ++m_stats.annulled;
+            advance(i, t);
+            noteChange(i, oldCell);
             scheduleDomain(i);
         }
     }
@@ -537,6 +559,8 @@ std::uint64_t Engine<D, Queue>::runDomain(EventKey limit) {
     template void Engine<D, Q>::drainChanges(std::vector<Change>&);                                       \
     template std::uint32_t Engine<D, Q>::ownedCount() const noexcept;                                     \
     template void Engine<D, Q>::injectCausalityError(std::uint64_t) noexcept;                             \
+    template void Engine<D, Q>::setCollisionLog(std::vector<EventKey>*) noexcept;                         \
+    template void Engine<D, Q>::applyReceivedUntil(Real);                                                 \
     template void Engine<D, Q>::takeCellEvents(std::vector<std::uint64_t>&);                              \
     template bool Engine<D, Q>::realSlot(std::uint32_t) const noexcept;
 

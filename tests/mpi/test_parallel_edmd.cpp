@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The parallel event-driven engine against the serial one (edmd spec 5.7 AT-4; issue 15), run
 // under mpirun with 2 and 3 ranks (granulab_mpi_tests): the same collisions in the same order
-// (per-particle collision counts equal, the global count equal) and the final state equal to
-// round-off; forced causality errors and rollbacks leave the result unchanged; a state gathered
-// on P ranks resumes on P ranks and on the serial engine event for event; inelastic cooling
+// (per-particle collision counts equal, the global count equal) and the state equal bit for
+// bit, also at collision-count stops; forced causality errors and rollbacks leave the result unchanged; a
+// state gathered on P ranks resumes on P ranks and on the serial engine event for event; inelastic cooling
 // loses and duplicates no particle.
 #include <gtest/gtest.h>
 
@@ -77,8 +77,18 @@ void expectSameAsSerial(int n, Real nu, Real tEnd, int stops, std::uint64_t forc
             EXPECT_EQ(g.stats.collisions, serial.stats().collisions) << "stop " << k;
             const auto [dx, dv] = compare(serial, records);
             EXPECT_GE(dx, 0) << "ids or per-particle collision counts differ at stop " << k;
-            EXPECT_LE(dx, 1e-9 * s.config.box[0]) << "stop " << k;
-            EXPECT_LE(dv, 1e-9) << "stop " << k;
+            // Bit for bit: the same events in the same order on the same grid.
+            EXPECT_EQ(dx, 0) << "stop " << k;
+            EXPECT_EQ(dv, 0) << "stop " << k;
+            if (std::getenv("GRANULAB_TEST_VERBOSE"))
+                for (std::uint32_t i = 0; i < serial.size(); ++i) {
+                    const auto x = serial.positionNow(i);
+                    for (int d = 0; d < D; ++d)
+                        if (x[d] != records[i].x[d]) {
+                            std::fprintf(stderr, "id %u differs (axis %d) tst %.17g\n", i, d, records[i].tst);
+                            break;
+                        }
+                }
             if (std::getenv("GRANULAB_TEST_VERBOSE"))
                 std::fprintf(stderr, "stop %d: collisions %llu dx %g dv %g\n", k,
                              static_cast<unsigned long long>(g.stats.collisions), dx, dv);
@@ -111,6 +121,46 @@ TEST(ParallelEdmd, ElasticSpheresMatchSerial) {
 
 TEST(ParallelEdmd, ForcedRollbacksLeaveTheResultUnchanged) {
     expectSameAsSerial<2>(40, 0.3, 4.0, 4, 2, false);
+}
+
+// Collision-count stops (the edmd pre-run and collision-count scenes): the parallel engine
+// stops exactly after the serial engine's k-th collision, also with forced rollbacks, and goes
+// on from there event for event.
+TEST(ParallelEdmd, CollisionCountStopsMatchSerial) {
+    Communicator& comm = worldCommunicator();
+    auto s = scene<2>(40, 0.3, 5);
+    Engine<2> serial(s.config, s.gas.x, s.gas.v, s.gas.radius, s.gas.mass);
+    ParallelConfig pc;
+    pc.forcedErrorEvery = 3;
+    ParallelEngine<2> parallel(comm, s.config, pc, s.gas.x, s.gas.v, s.gas.radius, s.gas.mass);
+    for (const std::uint64_t more : {1u, 777u, 1600u, 5u, 3000u}) {
+        serial.runCollisions(more);
+        parallel.runCollisions(more);
+        const EngineGlobals g = parallel.globals();
+        const auto records = parallel.gatherNow();
+        EXPECT_EQ(parallel.time(), serial.time()) << "after " << more;
+        if (std::getenv("GRANULAB_TEST_VERBOSE"))
+            std::fprintf(stderr, "rank %d after %llu: rollbacks %llu careful %llu sections %llu\n",
+                         comm.rank(), static_cast<unsigned long long>(more),
+                         static_cast<unsigned long long>(parallel.parallelStats().rollbacks),
+                         static_cast<unsigned long long>(parallel.parallelStats().carefulSections),
+                         static_cast<unsigned long long>(parallel.parallelStats().sections));
+        if (comm.root()) {
+            EXPECT_EQ(g.stats.collisions, serial.stats().collisions);
+            const auto [dx, dv] = compare(serial, records);
+            EXPECT_EQ(dx, 0) << "after " << more;
+            EXPECT_EQ(dv, 0) << "after " << more;
+        }
+    }
+    // A time stop after count stops lands on the same state too.
+    serial.runUntil(serial.time() + 0.5);
+    parallel.runUntil(parallel.time() + 0.5);
+    const auto records = parallel.gatherNow();
+    if (comm.root()) {
+        const auto [dx, dv] = compare(serial, records);
+        EXPECT_EQ(dx, 0);
+        EXPECT_EQ(dv, 0);
+    }
 }
 
 TEST(ParallelEdmd, ResumeOnAnotherRankCountAndOnTheSerialEngine) {

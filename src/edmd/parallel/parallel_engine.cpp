@@ -8,6 +8,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "core/interrupt.hpp"
 #include "core/timer.hpp"
 
 namespace granulab::edmd {
@@ -287,8 +288,15 @@ void ParallelEngine<D>::distribute(std::vector<ParticleRecord> owned, bool every
         local = std::move(mine);
         for (const auto& b : m_comm.allToAll(std::move(buffers))) unpackRecords(b, local);
     }
-    m_kernel = std::make_unique<Kernel>(m_config, m_layout, globals, std::move(local));
+    rebuildKernel(globals, std::move(local));
     m_stats.rebuildSeconds += elapsedSince(t0);
+}
+
+template <int D>
+void ParallelEngine<D>::rebuildKernel(const EngineGlobals& globals, std::vector<ParticleRecord> records) {
+    m_kernel = std::make_unique<Kernel>(m_config, m_layout, globals, std::move(records));
+    m_collisionLog.clear();
+    m_kernel->setCollisionLog(m_logging ? &m_collisionLog : nullptr);
 }
 
 template <int D>
@@ -299,6 +307,7 @@ void ParallelEngine<D>::commitBarrier(Real t) {
     m_kernel->takeCellEvents(m_cellLoad);
     m_checkpointGlobals = m_kernel->globals();
     m_checkpoint = m_kernel->records(false);
+    m_collisionLog.clear();
     m_stats.rebuildSeconds += elapsedSince(t0);
 }
 
@@ -306,7 +315,7 @@ template <int D>
 void ParallelEngine<D>::rollback() {
     const double t0 = wallSeconds();
     m_stats.eventsUndone += m_kernel->stats().events - m_checkpointGlobals.stats.events;
-    m_kernel = std::make_unique<Kernel>(m_config, m_layout, m_checkpointGlobals, m_checkpoint);
+    rebuildKernel(m_checkpointGlobals, m_checkpoint);
     m_stats.rebuildSeconds += elapsedSince(t0);
 }
 
@@ -361,8 +370,7 @@ void ParallelEngine<D>::exchange(std::vector<EventKey>* sentMin, std::vector<Eve
 }
 
 template <int D>
-bool ParallelEngine<D>::runSection(Real target, Real& errorTime) {
-    const EventKey limit{target, 0};
+bool ParallelEngine<D>::runSection(EventKey limit, Real& errorTime) {
     std::vector<EventKey> sentMin, announced;
     bool inFlight = false;
     for (;;) {
@@ -375,12 +383,12 @@ bool ParallelEngine<D>::runSection(Real target, Real& errorTime) {
                 m_stats.communicationSeconds += elapsedSince(t0);
                 return false;
             }
-            if (result[1] >= target) {
+            if (result[1] > 0) {  // no rank had anything below the limit
                 m_stats.communicationSeconds += elapsedSince(t0);
                 return true;
             }
         }
-        const std::array<double, 2> mine{m_kernel->causalityError(), m_kernel->nextKey().time};
+        const std::array<double, 2> mine{m_kernel->causalityError(), m_kernel->nextKey() < limit ? 0.0 : 1.0};
         m_comm.startMin(mine);
         inFlight = true;
         m_stats.communicationSeconds += elapsedSince(t0);
@@ -419,9 +427,74 @@ Real ParallelEngine<D>::runCareful(Real target, Real past) {
 
 template <int D>
 void ParallelEngine<D>::runUntil(Real tEnd) {
+    run(tEnd, ~std::uint64_t{0});
+}
+
+template <int D>
+void ParallelEngine<D>::runCollisions(std::uint64_t collisions, Real tEnd) {
+    const std::uint64_t now = globalCollisions();
+    run(tEnd, collisions > ~std::uint64_t{0} - now ? ~std::uint64_t{0} - 1 : now + collisions);
+}
+
+template <int D>
+std::uint64_t ParallelEngine<D>::globalCollisions() {
+    std::array<std::uint64_t, 1> c{m_kernel->stats().collisions};
+    m_comm.allSum(c);
+    return c[0];
+}
+
+template <int D>
+EventKey ParallelEngine<D>::kthCollision(std::uint64_t k) {
+    // Each rank's log is in its own key order; the k smallest of all are among the first k of
+    // each. The root merges them and tells everybody.
+    const std::size_t mine = static_cast<std::size_t>(std::min<std::uint64_t>(k, m_collisionLog.size()));
+    ByteBuffer b(mine * sizeof(EventKey));
+    if (mine) std::memcpy(b.data(), m_collisionLog.data(), b.size());
+    ByteBuffer answer;
+    const std::vector<ByteBuffer> parts = m_comm.gather(std::move(b));
+    if (m_comm.root()) {
+        std::vector<EventKey> all;
+        for (const auto& part : parts) {
+            const std::size_t at = all.size();
+            all.resize(at + part.size() / sizeof(EventKey));
+            if (!part.empty()) std::memcpy(all.data() + at, part.data(), part.size());
+        }
+        if (all.size() < k) throw std::logic_error("edmd parallel: fewer logged collisions than counted");
+        std::nth_element(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(k - 1), all.end());
+        answer.resize(sizeof(EventKey));
+        std::memcpy(answer.data(), &all[k - 1], sizeof(EventKey));
+    }
+    answer = m_comm.broadcast(std::move(answer));
+    return readAt<EventKey>(answer, 0);
+}
+
+template <int D>
+void ParallelEngine<D>::run(Real tEnd, std::uint64_t target) {
+    m_interrupted = false;
+    m_stall = Stall::None;
+    const bool byCount = target != ~std::uint64_t{0};
+    if (byCount != m_logging) {
+        m_logging = byCount;
+        m_collisionLog.clear();
+        m_kernel->setCollisionLog(m_logging ? &m_collisionLog : nullptr);
+    }
+    std::uint64_t atBarrier = byCount ? globalCollisions() : 0;
+    if (byCount && atBarrier >= target) return;
+    // The key of the collision that completes the count, once a section has passed it.
+    EventKey stopKey{kNoEvent, 0};
     Real forcedTarget = kNoEvent;
+    int quietSections = 0;
     while (m_barrier < tEnd) {
-        const Real target = std::min({forcedTarget, m_barrier + m_interval, tEnd});
+        // A signal on any rank stops every rank at this barrier (a resumable state).
+        std::array<double, 1> signal{interruptRequested() ? 1.0 : 0.0};
+        m_comm.allMax(signal);
+        if (signal[0] > 0) {
+            m_interrupted = true;
+            break;
+        }
+        EventKey limit{std::min({forcedTarget, m_barrier + m_interval, tEnd}), 0};
+        const bool toStop = stopKey < limit;
+        if (toStop) limit = stopKey;
         forcedTarget = kNoEvent;
         if (m_parallel.forcedErrorEvery > 0 &&
             (m_stats.sections + m_stats.rollbacks + 1) % m_parallel.forcedErrorEvery == 0 &&
@@ -429,10 +502,29 @@ void ParallelEngine<D>::runUntil(Real tEnd) {
                              static_cast<std::uint64_t>(m_comm.size())) == m_comm.rank())
             m_kernel->injectCausalityError(64);
         Real errorTime = kNoEvent;
-        if (runSection(target, errorTime)) {
-            commitBarrier(target);
+        if (runSection(limit, errorTime)) {
+            if (byCount && !toStop) {
+                const std::uint64_t now = globalCollisions();
+                if (now >= target) {
+                    // Passed the count: repeat the section from the barrier up to the k-th
+                    // collision (the serial engine stops right after it).
+                    stopKey = kthCollision(target - atBarrier);
+                    stopKey.kind = 2;  // after the collision event (kind 1) of that particle
+                    rollback();
+                    continue;
+                }
+                quietSections = now == atBarrier ? quietSections + 1 : 0;
+                atBarrier = now;
+            }
+            if (toStop) m_kernel->applyReceivedUntil(limit.time);
+            commitBarrier(limit.time);
             ++m_stats.sections;
             m_interval = std::min(m_interval * 1.1, m_parallel.maxSyncInterval);
+            if (toStop) break;
+            if (quietSections >= 64) {  // a count that can never be reached
+                m_stall = Stall::NoCollision;
+                break;
+            }
             if (m_parallel.loadBalancing && m_comm.size() >= 3) balance();
             continue;
         }
@@ -444,9 +536,14 @@ void ParallelEngine<D>::runUntil(Real tEnd) {
         if (errorTime > m_barrier) {
             forcedTarget = errorTime;
         } else {
-            const Real reached = runCareful(tEnd, m_barrier);
+            const Real reached = runCareful(std::min(tEnd, stopKey.time), m_barrier);
             commitBarrier(reached);
             ++m_stats.sections;
+            if (byCount) {
+                atBarrier = globalCollisions();
+                // Simultaneous collisions at the barrier passed the count: stop at that instant.
+                if (atBarrier >= target) break;
+            }
         }
     }
 }

@@ -71,9 +71,18 @@ public:
                    const EngineGlobals& globals, std::vector<ParticleRecord> records);
     ~ParallelEngine();
 
-    /// Runs every rank until all events before tEnd [s] are done; time() is then tEnd.
+    /// Runs every rank until all events before tEnd [s] are done; time() is then tEnd. Stops
+    /// early, at a barrier, when interruptRequested() on any rank (interrupted() is then true).
     void runUntil(Real tEnd);
+    /// Runs until `collisions` more particle collisions (all ranks together) have happened or
+    /// tEnd; time() is then that of the last collision, exactly where the serial engine's
+    /// runCollisions stops (the section that passes the count is repeated up to the k-th
+    /// collision in the global (time, id) order), or tEnd. Stops early when interrupted or when
+    /// no collision happens over 64 sections (stalled() is then Stall::NoCollision).
+    void runCollisions(std::uint64_t collisions, Real tEnd = kNoEvent);
     Real time() const noexcept { return m_barrier; }
+    bool interrupted() const noexcept { return m_interrupted; }
+    Stall stalled() const noexcept { return m_stall; }
 
     /// Every particle at time(): position (wrapped into the box) and velocity extrapolated,
     /// tst = time(); sorted by id, on the root only (empty elsewhere).
@@ -103,9 +112,17 @@ private:
     /// rebuilds the kernels; `owned` are this rank's owned records (or every record when
     /// `everyRecord`, then no exchange is needed).
     void distribute(std::vector<ParticleRecord> owned, bool everyRecord, const EngineGlobals& globals);
-    /// One section up to (limit.time): true when every rank reached it; false on a causality
-    /// error (then errorTime is the global earliest).
-    bool runSection(Real target, Real& errorTime);
+    /// The sections up to tEnd or the collision count `target` (~0: none).
+    void run(Real tEnd, std::uint64_t target);
+    /// One section: every event and record whose key is below `limit`. True when every rank
+    /// reached it; false on a causality error (then errorTime is the global earliest).
+    bool runSection(EventKey limit, Real& errorTime);
+    /// Collisions of all ranks so far.
+    std::uint64_t globalCollisions();
+    /// The key of the k-th (k >= 1) collision of this section in the global order.
+    EventKey kthCollision(std::uint64_t k);
+    /// A new kernel from records (the collision log attached when a count stop is active).
+    void rebuildKernel(const EngineGlobals& globals, std::vector<ParticleRecord> records);
     /// The section event by event in global order (after an error at the section's start).
     Real runCareful(Real target, Real past);
     void exchange(std::vector<EventKey>* sentMin, std::vector<EventKey>* announced);
@@ -138,6 +155,10 @@ private:
     Real m_interval = 0;                    ///< [s] current barrier interval
     std::vector<std::uint64_t> m_cellLoad;  ///< events per cell since the last balancing
     std::vector<typename Kernel::Change> m_changes;
+    std::vector<EventKey> m_collisionLog;  ///< this section's collisions (count stops only)
+    bool m_logging = false;
+    bool m_interrupted = false;
+    Stall m_stall = Stall::None;
     ParallelStats m_stats;
 };
 
