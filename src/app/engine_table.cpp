@@ -19,7 +19,7 @@ const std::vector<EngineEntry>& engineTable() {
         {"dem", "time-driven soft-particle DEM in 2D: disks and convex polygons (gc2d, cfddem)",
          io::demSceneSections, makeDemSimulation, demInfo, demAnalyze, ""},
         {"edmd", "event-driven MD of inelastic hard disks and spheres (edmd)", io::edmdSceneSections,
-         makeEdmdSimulation, edmdInfo, edmdAnalyze, ""},
+         makeEdmdSimulation, edmdInfo, edmdAnalyze, "", true},
     };
     return table;
 }

@@ -28,6 +28,9 @@ struct EngineEntry {
     /// `granulab analyze DIR` of a finished run (nullptr: no analyses yet, see analyzeLater).
     int (*analyze)(const AnalyzeOptions& options, const nlohmann::json& summary);
     std::string analyzeLater;  ///< what to tell a user whose engine has no analyses yet
+    /// Runs on several MPI ranks (`mpirun -np P granulab run`; app/simulation.hpp says what its
+    /// adapter must then do); otherwise such a run is refused with exit status 2.
+    bool severalRanks = false;
 };
 
 const std::vector<EngineEntry>& engineTable();

@@ -17,6 +17,7 @@
 #include "core/error.hpp"
 #include "core/version.hpp"
 #ifdef GRANULAB_HAVE_MPI
+#include "core/communicator.hpp"
 #include "mpi/mpi_communicator.hpp"
 #endif
 
@@ -244,10 +245,14 @@ int main(int argc, char** argv) {
         fmt::print("{}", app::helpText(*help ? helpTopic : ""));
         return 0;
     } catch (const SceneError& e) {
-        std::fputs(e.what(), stderr);
+        // Under mpirun every rank meets the same scene errors (granulab run makes the root's
+        // verdicts collective): printed once.
+        if (worldCommunicator().root()) std::fputs(e.what(), stderr);
         return app::kExitBadInput;
     } catch (const std::exception& e) {
         fmt::print(stderr, "error: {}\n", e.what());
+        // One rank's failure must not leave the others waiting in a collective call forever.
+        if (worldCommunicator().size() > 1) worldCommunicator().abort(app::kExitFailure);
         return app::kExitFailure;
     }
 }

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <filesystem>
 #include <system_error>
 
@@ -84,34 +85,52 @@ std::string defaultOutDir(const std::string& scenePath) {
 
 int runCommand(const RunOptions& opt) {
     const double startWall = wallSeconds();
-    // No engine runs on several MPI ranks through `granulab run` yet (issue 15): every rank would
-    // run the whole scene into the same output folder. Refused on every rank alike (exit 2).
-    if (const int ranks = worldCommunicator().size(); ranks > 1)
-        throw SceneError(
-            makeDiagnostic(opt.scene, 0, "",
-                           fmt::format("granulab run was started on {} MPI ranks; runs on several "
-                                       "ranks are not available yet: start it without mpirun",
-                                       ranks)));
+    Communicator& comm = worldCommunicator();
+    // Under mpirun every rank reads the scene and builds its part of the engine (the same scene
+    // errors on every rank; main prints them once); only the root prints and writes files.
+    const bool quiet = opt.quiet || !comm.root();
     // SceneError -> exit 2 in main; problems of --set values are located at the --set.
     const model::SceneDef scene =
         io::withOverrideLocations(opt.overrides, [&] { return app::readScene(opt.scene, opt.overrides); });
     const EngineEntry& engine = engineOf(scene);
+    if (comm.size() > 1 && !engine.severalRanks)
+        throw SceneError(makeDiagnostic(
+            scene.run.loc.file, scene.run.loc.line, "run.engine",
+            fmt::format("the {} engine runs on one process; this run was started on {} MPI ranks: start "
+                        "it without mpirun (engines that run on several ranks: edmd)",
+                        engine.name, comm.size())));
     const std::unique_ptr<Simulation> sim = io::withOverrideLocations(opt.overrides, [&] {
-        return engine.build(scene, {opt.scene, opt.quiet});
+        return engine.build(scene, {opt.scene, quiet});
     });
-    for (const auto& w : sim->warnings()) fmt::print(stderr, "warning: {}\n", w);
+    if (comm.root())
+        for (const auto& w : sim->warnings()) fmt::print(stderr, "warning: {}\n", w);
     const std::string dir = !opt.outDir.empty()
                                 ? opt.outDir
                                 : (!opt.resumeDir.empty() ? opt.resumeDir : defaultOutDir(opt.scene));
-    claimOutputFolder(opt, dir);
-    fs::create_directories(dir);
+    // The root claims the folder; its verdict reaches every rank, which all stop alike (main
+    // prints the root's message).
+    std::vector<Diagnostic> refusal;
+    if (comm.root()) {
+        try {
+            claimOutputFolder(opt, dir);
+            fs::create_directories(dir);
+        } catch (const SceneError& e) {
+            refusal = e.diagnostics();
+        }
+    }
+    std::array<double, 1> refused{refusal.empty() ? 0.0 : 1.0};
+    comm.allMax(refused);
+    if (refused[0] > 0)
+        throw SceneError(
+            comm.root() ? refusal
+                        : std::vector<Diagnostic>{makeDiagnostic(dir, 0, "", "refused by the root rank")});
     RunContext ctx;
     ctx.engine = engine.name;
     ctx.scenePath = opt.scene;
     ctx.dir = dir;
     ctx.resumeDir = opt.resumeDir;
     ctx.resumeCommand = resumeCommand(opt, dir);
-    ctx.quiet = opt.quiet;
+    ctx.quiet = quiet;
     ctx.startWall = startWall;
     return runSimulation(*sim, scene, ctx);
 }

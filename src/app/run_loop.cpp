@@ -6,16 +6,21 @@
 // SIGINT/SIGTERM (core/interrupt.hpp): the engine stops after a whole step or event, the loop
 // writes a series row and a checkpoint at that state, summary.json says "interrupted" with the
 // command that resumes, and the exit status is 128 + signal.
+// Under mpirun (an engine that runs on several ranks) the loop runs on every rank in step; the
+// root rank alone writes the files and prints (app/simulation.hpp says what is collective).
 #include "app/run_loop.hpp"
 
 #include <fmt/format.h>
 
 #include <filesystem>
+#include <optional>
+#include <ostream>
 #include <utility>
 
 #include "app/exit_codes.hpp"
 #include "app/progress.hpp"
 #include "app/trigger.hpp"
+#include "core/communicator.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
 #include "core/timer.hpp"
@@ -34,6 +39,18 @@ std::string checkpointLine(double time, const std::string& where) {
 
 io::CheckpointHeader headerOf(const std::string& engine, const Simulation& sim, std::int64_t nextSnapshot) {
     return {engine, sim.identity(), {nextSnapshot}};
+}
+
+/// Writes checkpoint.bin (root); saveState is collective, so the other ranks call it too, into
+/// a stream that discards.
+void writeCheckpoint(Simulation& sim, const RunContext& ctx, std::int64_t nextSnapshot) {
+    if (worldCommunicator().root()) {
+        io::writeCheckpoint(ctx.dir, headerOf(ctx.engine, sim, nextSnapshot),
+                            [&](std::ostream& out) { sim.saveState(out); });
+    } else {
+        std::ostream discard(nullptr);
+        sim.saveState(discard);
+    }
 }
 
 /// Loads `ctx.resumeDir`/checkpoint.bin into `sim`; a missing or foreign checkpoint is bad
@@ -80,10 +97,13 @@ int finishRun(Simulation& sim, const RunContext& ctx, const LoopOutcome& outcome
     const auto& [status, report, lastCheckpoint, warningsBefore, resumable] = outcome;
     const bool ok = status == kSimOk;
     const bool interrupted = status == kSimInterrupted;
+    const bool root = worldCommunicator().root();
     const auto warnings = sim.warnings();
-    for (std::size_t k = warningsBefore; k < warnings.size(); ++k)
-        fmt::print(stderr, "warning: {}\n", warnings[k]);  // shown even with --quiet
+    if (root)
+        for (std::size_t k = warningsBefore; k < warnings.size(); ++k)
+            fmt::print(stderr, "warning: {}\n", warnings[k]);  // shown even with --quiet
     if (ok) sim.writeFinal(ctx.dir);
+    const nlohmann::json engineKeys = sim.summaryKeys(report);  // collective
     io::SummaryCommon common;
     common.engine = ctx.engine;
     common.scene = ctx.scenePath;
@@ -97,7 +117,8 @@ int finishRun(Simulation& sim, const RunContext& ctx, const LoopOutcome& outcome
     common.loopTime = report.loopSeconds;
     common.memoryBytes = sim.memoryBytes();
     common.warnings = warnings;
-    io::writeSummary(ctx.dir + "/summary.json", common, sim.summaryKeys(report));
+    if (!root) return interrupted ? exitStatusOfSignal(interruptSignal()) : (ok ? kExitOk : kExitUnstable);
+    io::writeSummary(ctx.dir + "/summary.json", common, engineKeys);
     if (interrupted) {
         fmt::print(stderr, "\n{}\n", interruptMessage(sim, ctx, resumable));  // shown even with --quiet
         return exitStatusOfSignal(interruptSignal());
@@ -113,6 +134,7 @@ int finishRun(Simulation& sim, const RunContext& ctx, const LoopOutcome& outcome
 }  // namespace
 
 int runSimulation(Simulation& sim, const model::SceneDef& scene, const RunContext& ctx) {
+    const bool root = worldCommunicator().root();
     const RunPlan plan = sim.plan();
     Trigger end(plan.end), series(plan.series), snapshots(plan.snapshots), checkpoints(plan.checkpoints),
         progressTick(plan.progress), benchmark(plan.benchmark);
@@ -138,31 +160,42 @@ int runSimulation(Simulation& sim, const model::SceneDef& scene, const RunContex
                         "to continue, set a later end (run.end_time, got {:.6g} s)",
                         ctx.resumeDir, sim.time(), scene.run.endTime)));
 
-    io::SeriesWriter seriesFile(ctx.dir + "/series.csv", sim.seriesColumns(), resumed ? sim.time() : -1.0);
-    sim.openOutputs(ctx.dir, resumed ? sim.time() : -1.0);
+    // The files are the root's; the other ranks compute along (collective members) and drop rows.
+    std::optional<io::SeriesWriter> seriesFile;
+    if (root) {
+        seriesFile.emplace(ctx.dir + "/series.csv", sim.seriesColumns(), resumed ? sim.time() : -1.0);
+        sim.openOutputs(ctx.dir, resumed ? sim.time() : -1.0);
+    }
+    const auto seriesRow = [&] {
+        std::vector<double> row = sim.seriesRow();
+        if (seriesFile) seriesFile->row(row);
+    };
+    const auto flushSeries = [&] {
+        if (seriesFile) seriesFile->flush();
+    };
     io::PvdWriter pvd(ctx.dir + "/snapshots.pvd");
-    if (resumed && fs::exists(ctx.dir + "/snapshots.pvd")) {
+    if (root && resumed && fs::exists(ctx.dir + "/snapshots.pvd")) {
         pvd.load();
         pvd.truncateAfter(sim.time());
     }
     const auto writeSnapshot = [&] {
         sim.snapshot(ctx.dir, static_cast<int>(book.nextSnapshot++), pvd);
-        seriesFile.flush();
+        flushSeries();
     };
     // The state of the last series row, so that an interrupt does not repeat it (a resumed run's
     // rows end at or before the checkpoint).
     std::pair<double, std::uint64_t> rowState{sim.time(), sim.count()};
     if (!resumed) {
-        seriesFile.row(sim.seriesRow());
+        seriesRow();
         writeSnapshot();
     }
     const std::size_t warningsBefore = sim.warnings().size();
-    if (!ctx.quiet) fmt::print(stderr, "{}\n", sim.banner(ctx.dir));
+    if (!ctx.quiet && root) fmt::print(stderr, "{}\n", sim.banner(ctx.dir));
 
     const auto position = [&] {
         return plan.progressByCount ? static_cast<double>(sim.count()) : sim.time();
     };
-    Progress progress(plan.progressEnd, ctx.quiet, sim.progressUnit(), plan.progressByCount);
+    Progress progress(plan.progressEnd, ctx.quiet || !root, sim.progressUnit(), plan.progressByCount);
     RunReport report;
     report.resumed = resumed;
     sim.beginLoop();
@@ -206,16 +239,15 @@ int runSimulation(Simulation& sim, const model::SceneDef& scene, const RunContex
         if (doSeries || doSnapshot || doCheckpoint) {
             const double t0 = wallSeconds();
             if (doSeries) {
-                seriesFile.row(sim.seriesRow());
+                seriesRow();
                 rowState = {t, c};
                 status = sim.health();
                 if (status != kSimOk) break;
             }
             if (doSnapshot) writeSnapshot();
             if (doCheckpoint) {
-                seriesFile.flush();
-                io::writeCheckpoint(ctx.dir, headerOf(ctx.engine, sim, book.nextSnapshot),
-                                    [&](std::ostream& out) { sim.saveState(out); });
+                flushSeries();
+                writeCheckpoint(sim, ctx, book.nextSnapshot);
                 lastCheckpoint = checkpointLine(t, ctx.dir);
             }
             report.outputSeconds += wallSeconds() - t0;
@@ -225,10 +257,9 @@ int runSimulation(Simulation& sim, const model::SceneDef& scene, const RunContex
         if (finished) break;
     }
     if (status == kSimInterrupted) {  // a consistent state after a whole step or event
-        if (rowState != std::pair{sim.time(), sim.count()}) seriesFile.row(sim.seriesRow());
-        seriesFile.flush();
-        io::writeCheckpoint(ctx.dir, headerOf(ctx.engine, sim, book.nextSnapshot),
-                            [&](std::ostream& out) { sim.saveState(out); });
+        if (rowState != std::pair{sim.time(), sim.count()}) seriesRow();
+        flushSeries();
+        writeCheckpoint(sim, ctx, book.nextSnapshot);
     }
     const double loopEnd = wallSeconds();
     progress.finish(position(), static_cast<std::int64_t>(sim.progressCounter()));

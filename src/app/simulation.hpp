@@ -3,6 +3,13 @@
 // per run, called once per output stop, never per particle or per step (so DESIGN.md's "no
 // virtual calls in hot loops" holds). An engine joins granulab with one adapter implementing
 // this interface and one row in the engine table (app/engine_table.cpp).
+//
+// Several MPI ranks (an engine whose table row allows them): the run loop runs on every rank in
+// step, so every member is called on every rank in the same order, and a member may be
+// collective (gather particles, sum statistics). What the loop branches on (time, count, the
+// status of advance and health, plan) must be the same on every rank. Only the root rank
+// writes files and prints: snapshot, writeFinal and saveState write on the root (saveState's
+// stream discards elsewhere); seriesRow's values are used on the root only.
 #pragma once
 #include <cstdint>
 #include <functional>
@@ -130,7 +137,7 @@ public:
     /// Writes final.csv (io/final_csv.hpp contract) and the engine's other end-of-run files.
     virtual void writeFinal(const std::string& dir) = 0;
     /// The engine's own summary.json keys (io/summary.hpp merges them with the common ones).
-    virtual nlohmann::json summaryKeys(const RunReport& report) const = 0;
+    virtual nlohmann::json summaryKeys(const RunReport& report) = 0;
     /// First line printed before the loop (what runs, how long, where to).
     virtual std::string banner(const std::string& dir) const = 0;
     /// Prints the lines after a successful run (throughput; files and how to look at them).
@@ -139,7 +146,7 @@ public:
     // ---- checkpoints -------------------------------------------------------------------------
     /// What a checkpoint must share with this scene to resume it.
     virtual io::SceneIdentity identity() const = 0;
-    virtual void saveState(std::ostream& out) const = 0;
+    virtual void saveState(std::ostream& out) = 0;
     virtual void loadState(std::istream& in) = 0;
 };
 

@@ -227,6 +227,9 @@ public:
     EventKey nextBorderKey() const noexcept;
     /// Executes events and received updates in key order while their key is below `limit`.
     std::uint64_t runDomain(EventKey limit);
+    /// runDomain stopped because the clock stood still over a watchdog window (an inelastic
+    /// collapse); it does nothing more.
+    bool domainStalled() const noexcept { return m_domain && m_domain->stalled; }
     /// Applies every received update of time <= t [s] (a section that ended inside an instant,
     /// after the k-th collision: the partner's record made by it is applied, as in the serial
     /// engine, while the events after it wait).
@@ -253,6 +256,9 @@ public:
     /// Adds the events executed per owned cell since the last call to `perCell` (sized to the
     /// cell count) and restarts the count: the load measure of the balancing (spec 3.2).
     void takeCellEvents(std::vector<std::uint64_t>& perCell);
+    /// Starts counting events per cell (off by default: a write per event that only the load
+    /// balancing needs).
+    void countCellEvents();
     /// Simulated causality error (tests of the rollback): the first record received after
     /// `events` more local events is treated as late.
     void injectCausalityError(std::uint64_t events) noexcept;
@@ -429,7 +435,7 @@ private:
     };
     struct DomainData {
         std::vector<CellRole> role;             ///< per cell index
-        std::vector<std::uint32_t> cellEvents;  ///< per cell index: events since takeCellEvents
+        std::vector<std::uint32_t> cellEvents;  ///< per cell index: events since takeCellEvents (if counted)
         AddressableHeap border;                 ///< per slot: the time of its event if a border event
         std::vector<std::uint8_t> dead;         ///< per slot: left this rank's cells (slot not reused)
         std::vector<Change> changes;
@@ -440,6 +446,10 @@ private:
         std::uint64_t injectAt = ~std::uint64_t{0};  ///< test hook: event count of a forced error
         std::vector<EventKey>* collisionLog = nullptr;  ///< keys of executed collisions (optional)
         std::uint32_t owned = 0;
+        // Progress watchdog of runDomain, as the serial run()'s: the clock must move in a window.
+        std::uint64_t watchAt = 0;
+        Real watchTime = 0;
+        bool stalled = false;
     };
 };
 

@@ -102,6 +102,8 @@ Engine<D, Queue>::Engine(EngineConfig config, const DomainLayout& layout, const 
         m_maxRadius0 = std::max(m_maxRadius0, r.radius0);
     }
     buildCells();  // the layout's grid; every slot's cell then comes from its record
+    // A serial engine chooses its grid again when growing spheres outgrow it (as it would have).
+    if (layout.role.empty()) m_forcedCells = {0, 0, 0};
     for (std::uint32_t s = 0; s < n; ++s)
         for (int d = 0; d < D; ++d) m_cellOf[s][d] = records[s].cell[d];
     for (std::uint32_t s = n; s-- > 0;) linkCell(s);  // ascending slot order in every cell list
@@ -109,7 +111,6 @@ Engine<D, Queue>::Engine(EngineConfig config, const DomainLayout& layout, const 
     if (!layout.role.empty()) {
         m_domain = std::make_unique<DomainData>();
         m_domain->role = layout.role;
-        m_domain->cellEvents.assign(cellCount, 0);
         m_domain->border.setTieKeys(m_id.data());
         m_domain->border.reset(n);
         m_domain->dead.assign(n, 0);
@@ -337,8 +338,13 @@ Real Engine<D, Queue>::causalityError() const noexcept {
 }
 
 template <int D, class Queue>
+void Engine<D, Queue>::countCellEvents() {
+    if (m_domain) m_domain->cellEvents.assign(m_head.size(), 0);
+}
+
+template <int D, class Queue>
 void Engine<D, Queue>::takeCellEvents(std::vector<std::uint64_t>& perCell) {
-    if (!m_domain) return;
+    if (!m_domain || m_domain->cellEvents.empty()) return;
     perCell.resize(m_domain->cellEvents.size(), 0);
     for (std::size_t c = 0; c < perCell.size(); ++c) {
         perCell[c] += m_domain->cellEvents[c];
@@ -491,7 +497,15 @@ std::uint64_t Engine<D, Queue>::runDomain(EventKey limit) {
                 continue;
             }
         }
-        if (!(ev < limit)) break;
+        if (!(ev < limit) || dom.stalled) break;
+        if (m_stats.events >= dom.watchAt) {  // the serial engine's watchdog (run())
+            if (dom.watchAt > 0 && !(ev.time - dom.watchTime > 1e-9 * std::abs(ev.time))) {
+                dom.stalled = true;
+                break;
+            }
+            dom.watchAt = m_stats.events + watchdogWindow();
+            dom.watchTime = ev.time;
+        }
         const Real t = ev.time;
         GL_ASSERT(t >= m_now && realSlot(i),
                   "edmd::Engine: domain event in the past or of a virtual particle");
@@ -500,7 +514,7 @@ std::uint64_t Engine<D, Queue>::runDomain(EventKey limit) {
         ++m_stats.events;
         const Event e = m_event[i];
         const std::uint32_t oldCell = cellIndex(m_cellOf[i]);
-        ++dom.cellEvents[oldCell];
+        if (!dom.cellEvents.empty()) ++dom.cellEvents[oldCell];  // the balancing's load
         if (e.partner < kMaxParticles) {
             const std::uint32_t j = e.partner;
             if (m_s[j].counter != e.partnerCounter) {  // annulled (spec 2.6)
@@ -562,6 +576,7 @@ std::uint64_t Engine<D, Queue>::runDomain(EventKey limit) {
     template void Engine<D, Q>::setCollisionLog(std::vector<EventKey>*) noexcept;                         \
     template void Engine<D, Q>::applyReceivedUntil(Real);                                                 \
     template void Engine<D, Q>::takeCellEvents(std::vector<std::uint64_t>&);                              \
+    template void Engine<D, Q>::countCellEvents();                                                        \
     template bool Engine<D, Q>::realSlot(std::uint32_t) const noexcept;
 
 GRANULAB_EDMD_DOMAIN_MEMBERS(2, AddressableHeap)

@@ -21,6 +21,9 @@ void AddressableHeap::reset(std::uint32_t n) {
 
 void AddressableHeap::set(std::uint32_t i, Real t) noexcept {
     const Real old = m_time[i];
+    // The same key: the heap stays ordered (the parallel kernel's border queue resets most of
+    // its entries to +infinity, where a sift would walk down the ids of all other infinities).
+    if (t == old) return;
     m_time[i] = t;
     std::uint32_t slot = m_pos[i];
     const auto n = static_cast<std::uint32_t>(m_heap.size());

@@ -111,6 +111,13 @@ void configureEngine(const Context& x, Setup& s) {
     for (std::size_t k = 0; k < e.gravity.size() && k < 3; ++k) c.gravity[k] = e.gravity[k];
     c.growthRate = e.growthRate;
     c.cellSize = e.cellSize;
+    // Cell grid (edmd spec 2.4, AT-6): target C/N, and "morton" the power-of-two counts of the
+    // parallel engine (spec 3.1), so that a serial run and a run on any number of ranks execute
+    // the same events; "free" and "auto" (the default on one process; the parallel engine always
+    // takes the power-of-two grid) the count nearest the target on each axis, which the power
+    // of two can make up to 2^D times coarser at high density.
+    c.cellsPerParticle = e.cellsPerParticle;
+    c.powerOfTwoCells = e.cellGrid == "morton";
 
     // Kinetic-theory scales (edmd spec 4.4) at the initial state, monodisperse formulas with
     // the mean radius for polydisperse gases.
@@ -212,6 +219,57 @@ void resolveRunLength(const Context& x, Setup& s, Diagnostics& d) {
     }
 }
 
+/// Cells per axis of the grid at the largest radius amax [m], or {0, 0, 0} where a periodic
+/// axis would hold fewer than 3 cells.
+std::array<int, 3> cellGridOrNone(int D, const EngineConfig& c, std::uint64_t count, Real amax) {
+    try {
+        const auto n = static_cast<std::uint32_t>(count);
+        return D == 2 ? chooseCellGrid<2>(c, n, amax) : chooseCellGrid<3>(c, n, amax);
+    } catch (const std::invalid_argument&) {
+        return {0, 0, 0};
+    }
+}
+
+/// The cell grid (edmd spec 2.4, 3.1, AT-6): a "morton" grid that a small periodic box cannot
+/// hold (4 cells of one diameter, at the end of the growth when growing) falls back to the free
+/// grid with a warning; a target C/N given by hand must give fewer than 2^31 cells that fit in
+/// memory (4 bytes per cell head).
+void resolveCellGrid(const Context& x, Setup& s, Diagnostics& d) {
+    const auto& [sc, e, loc, D] = x;
+    auto& c = s.config;
+    const std::uint64_t count = s.init.count;
+    if (count < 2) return;
+    const Real a0 = std::max(e.radius, e.radiusMax);
+    Real aEnd = a0;
+    if (e.growthRate > 0 && std::isfinite(s.endTime)) aEnd += e.growthRate * s.endTime;
+    if (c.powerOfTwoCells &&
+        (cellGridOrNone(D, c, count, a0)[0] == 0 || cellGridOrNone(D, c, count, aEnd)[0] == 0)) {
+        EngineConfig free = c;
+        free.powerOfTwoCells = false;
+        if (cellGridOrNone(D, free, count, a0)[0] > 0 && cellGridOrNone(D, free, count, aEnd)[0] > 0) {
+            c.powerOfTwoCells = false;
+            s.warnings.push_back(
+                "edmd.cell_grid = \"morton\": a periodic axis holds fewer than 4 cells of one diameter" +
+                std::string(e.growthRate > 0 ? " at the end of the growth" : "") +
+                ", too few for a power of two; the run uses the free grid (edmd.cell_grid = \"free\"), which "
+                "the parallel engine cannot reproduce");
+        }
+    }
+    if (e.cellsPerParticle > 0) {
+        const auto grid = cellGridOrNone(D, c, count, a0);
+        Real cells = 1;
+        for (int k = 0; k < D; ++k) cells *= grid[k];
+        if (!(cells < 2147483648.0))
+            d.error(loc, "edmd.cells_per_particle",
+                    fmt::format("{:.4g} cells per particle x {} particles makes {:.3g} cells; allowed fewer "
+                                "than 2^31: lower it, or 0 (automatic)",
+                                e.cellsPerParticle, count, cells));
+        else
+            checkMemoryFits(d, loc, "edmd.cells_per_particle", 4 * cells,
+                            fmt::format("{:.3g} cells ({} cells per particle)", cells, e.cellsPerParticle));
+    }
+}
+
 /// Warnings: inelastic collapse without the TC model (spec 4.3).
 void addWarnings(const Context& x, Setup& s) {
     const auto& [sc, e, loc, D] = x;
@@ -235,6 +293,8 @@ Setup resolveScene(const model::SceneDef& sc) {
     if (!resolveParticles(x, s, d)) d.throwIfAny();  // the rest needs a finite box and count
     configureEngine(x, s);
     resolveRunLength(x, s, d);
+    d.throwIfAny();
+    resolveCellGrid(x, s, d);
     d.throwIfAny();
     addWarnings(x, s);
     return s;

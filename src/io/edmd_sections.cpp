@@ -57,6 +57,8 @@ void readEdmd(TableReader& r, model::EdmdDef& e) {
     readAxisNumbers(r, "gravity", e.gravity, "components [m/s^2]");
     r.number("growth_rate", e.growthRate);
     r.number("cell_size", e.cellSize);
+    r.number("cells_per_particle", e.cellsPerParticle);
+    r.choice("cell_grid", e.cellGrid, {"auto", "morton", "free"});
     r.choice("queue", e.queue, {"calendar", "heap", "tree"});
     r.number("end_tau", e.endTau);
     r.number("end_collisions", e.endCollisions);

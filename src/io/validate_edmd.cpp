@@ -47,6 +47,12 @@ void checkEdmdDef(const model::SceneDef& sc, Diagnostics& d) {
         d.error(loc, "edmd.tc", fmt::format("must be >= 0 [s] (0: off) or -1 (automatic), got {}", e.tc));
     if (!(e.cellSize >= 0))
         d.error(loc, "edmd.cell_size", fmt::format("must be >= 0 [m] (0: automatic), got {}", e.cellSize));
+    // Cells per particle C/N (edmd spec 2.4, AT-6): 0 or (0, 1e4].
+    if (!(e.cellsPerParticle >= 0 && e.cellsPerParticle <= 1e4))
+        d.error(loc, "edmd.cells_per_particle",
+                fmt::format("must be in (0, 10000] (target cells per particle C/N; 1.5 in 2D, 8 in 3D at "
+                            "low density) or 0 (automatic), got {}",
+                            e.cellsPerParticle));
     if (e.seriesPoints < 2 || e.seriesPoints > 1000000)
         d.error(loc, "edmd.series_points", fmt::format("must be in [2, 1000000], got {}", e.seriesPoints));
     if (!(e.seriesFirst >= 0))

@@ -34,6 +34,13 @@ struct EdmdDef {
     std::vector<Real> gravity;  ///< [m/s^2] per axis; empty: none
     Real growthRate = 0;        ///< [m/s] u_a, radii grow as a0 + u_a t (periodic boxes)
     Real cellSize = 0;          ///< [m] lower bound of the cell edge; 0: automatic
+    /// Target cells per particle C/N (edmd spec 2.4, Fig. 2.3, AT-6); 0: automatic (1.5 in 2D,
+    /// 8 in 3D). Fewer where the diameter, cell_size or the box do not allow as many.
+    Real cellsPerParticle = 0;
+    /// auto | morton | free: every axis' cell count the power of two nearest the target (the
+    /// parallel engine's grid, edmd spec 3.1: the same events on any number of ranks) or the
+    /// nearest count; auto: free on one process, morton on several MPI ranks.
+    std::string cellGrid = "auto";
     std::string queue = "calendar";  ///< calendar | heap | tree
     Real endTau = 0;         ///< stop at this scaled time tau = lambda t/(2 D t_E) (edmd Eq. 4.57), 0: unused
     Real endCollisions = 0;  ///< stop after this many collisions per particle, 0: unused

@@ -125,6 +125,12 @@ TEST(EdmdCli, BadInputNamesTheKeyAndExitsWithTwo) {
         {"dimension",
          replaceOnce(kGas, "dimension = 2", "dimension = 4"),
          {"run.dimension", "disks (2) or spheres (3)"}},
+        {"cells_per_particle_range",
+         replaceOnce(kGas, "restitution = 0.9", "restitution = 0.9\ncells_per_particle = -2.0"),
+         {"bad.toml:7", "edmd.cells_per_particle", "(0, 10000]", "0 (automatic)"}},
+        {"cell_grid_name",
+         replaceOnce(kGas, "restitution = 0.9", "restitution = 0.9\ncell_grid = \"fre\""),
+         {"bad.toml:12", "edmd.cell_grid", "did you mean 'free'", "allowed: auto, morton, free"}},
         {"end_tau_elastic",
          replaceOnce(replaceOnce(kGas, "end_time = 4.0", ""), "restitution = 0.9",
                      "restitution = 1.0\nend_tau = 2.0"),
@@ -138,6 +144,29 @@ TEST(EdmdCli, BadInputNamesTheKeyAndExitsWithTwo) {
             EXPECT_NE(r.output.find(s), std::string::npos) << c.name << ": missing '" << s << "' in\n"
                                                            << r.output;
     }
+}
+
+TEST(EdmdCli, CellGridKeysReachTheEngine) {
+    // 400 disks at nu = 0.3 (L = 64.7, diameter 2): the automatic C/N = 1.5 gives 24 free cells
+    // per axis (also the default "auto" on one process); "morton" the nearest power of two, 32;
+    // cells_per_particle = 0.5
+    // fewer, 6 more (edmd spec 2.4, AT-6). summary.json's cells_per_axis is the engine's grid.
+    const test::ScratchDir scratch;
+    test::writeText(scratch.path / "gas.toml", replaceOnce(kGas, "end_time = 4.0", "end_time = 0.5"));
+    auto cells = [&](const std::string& set) {
+        const auto r = test::runGranulab("run gas.toml --out out --overwrite -q " + set, scratch.path);
+        EXPECT_EQ(r.status, 0) << set << ": " << r.output;
+        const auto js = nlohmann::json::parse(test::readText(scratch.path / "out/summary.json"));
+        return js["cells_per_axis"].get<std::vector<int>>();
+    };
+    EXPECT_EQ(cells(""), (std::vector<int>{24, 24}));
+    EXPECT_EQ(cells("--set edmd.cell_grid=morton"), (std::vector<int>{32, 32}));
+    EXPECT_EQ(cells("--set edmd.cell_grid=free"), (std::vector<int>{24, 24}));
+    EXPECT_EQ(cells("--set edmd.cell_grid=free --set edmd.cells_per_particle=0.5"),
+              (std::vector<int>{14, 14}));
+    EXPECT_EQ(cells("--set edmd.cell_grid=free --set edmd.cells_per_particle=6"), (std::vector<int>{32, 32}));
+    EXPECT_EQ(cells("--set edmd.cell_grid=morton --set edmd.cells_per_particle=0.25"),
+              (std::vector<int>{8, 8}));
 }
 
 TEST(EdmdCli, AnalyzeMeasuresTheFinalStateAndMasterEquationWritesItsCurves) {

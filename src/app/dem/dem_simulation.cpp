@@ -272,7 +272,7 @@ public:
                           fluidFinalColumns(m_world));
     }
 
-    nlohmann::json summaryKeys(const RunReport& report) const override {
+    nlohmann::json summaryKeys(const RunReport& report) override {
         const double n = static_cast<double>(m_world.store().size());
         const std::int64_t steps = m_world.stepIndex() - m_loopStartStep;
         nlohmann::json js;
@@ -417,7 +417,7 @@ public:
                           fmt::format("{:.17g} s", m_scene.run.endTime)});
         return id;
     }
-    void saveState(std::ostream& out) const override { m_world.saveState(out); }
+    void saveState(std::ostream& out) override { m_world.saveState(out); }
     void loadState(std::istream& in) override { m_world.loadState(in); }
 
 private:

@@ -242,7 +242,7 @@ void ParallelEngine<D>::buildLayout() {
     std::sort(m_neighbours.begin(), m_neighbours.end());
     for (std::size_t k = 0; k < m_neighbours.size(); ++k)
         m_neighbourIndex[static_cast<std::size_t>(m_neighbours[k])] = static_cast<int>(k);
-    m_cellLoad.assign(count, 0);
+    m_cellLoad.assign(balancing() ? count : 0, 0);
 }
 
 template <int D>
@@ -295,6 +295,7 @@ void ParallelEngine<D>::distribute(std::vector<ParticleRecord> owned, bool every
 template <int D>
 void ParallelEngine<D>::rebuildKernel(const EngineGlobals& globals, std::vector<ParticleRecord> records) {
     m_kernel = std::make_unique<Kernel>(m_config, m_layout, globals, std::move(records));
+    if (balancing()) m_kernel->countCellEvents();
     m_collisionLog.clear();
     m_kernel->setCollisionLog(m_logging ? &m_collisionLog : nullptr);
 }
@@ -383,12 +384,18 @@ bool ParallelEngine<D>::runSection(EventKey limit, Real& errorTime) {
                 m_stats.communicationSeconds += elapsedSince(t0);
                 return false;
             }
+            if (result[2] == 0) {  // a rank's clock stood still (inelastic collapse)
+                m_domainStalled = true;
+                m_stats.communicationSeconds += elapsedSince(t0);
+                return false;
+            }
             if (result[1] > 0) {  // no rank had anything below the limit
                 m_stats.communicationSeconds += elapsedSince(t0);
                 return true;
             }
         }
-        const std::array<double, 2> mine{m_kernel->causalityError(), m_kernel->nextKey() < limit ? 0.0 : 1.0};
+        const std::array<double, 3> mine{m_kernel->causalityError(), m_kernel->nextKey() < limit ? 0.0 : 1.0,
+                                         m_kernel->domainStalled() ? 0.0 : 1.0};
         m_comm.startMin(mine);
         inFlight = true;
         m_stats.communicationSeconds += elapsedSince(t0);
@@ -525,8 +532,14 @@ void ParallelEngine<D>::run(Real tEnd, std::uint64_t target) {
                 m_stall = Stall::NoCollision;
                 break;
             }
-            if (m_parallel.loadBalancing && m_comm.size() >= 3) balance();
+            if (balancing()) balance();
             continue;
+        }
+        if (m_domainStalled) {  // every rank back to the barrier's consistent state, and stop
+            m_domainStalled = false;
+            rollback();
+            m_stall = Stall::Clock;
+            break;
         }
         // Causality error somewhere (spec 3.4): everybody back to the barrier; the section is
         // repeated up to the error time. At the barrier itself: event by event past it.
@@ -581,24 +594,31 @@ void ParallelEngine<D>::balance() {
 }
 
 template <int D>
+void flyRecordTo(ParticleRecord& r, Real t, const EngineConfig& config) noexcept {
+    // As Engine::positionSlot and velocitySlot, so that gathered states equal the serial ones.
+    const Real dt = t - r.tst;
+    for (int d = 0; d < D; ++d) {
+        const Real g = config.gravity[d];
+        Real x = flightPosition(r.x[d], r.v[d], g, dt);
+        if (config.periodic[d]) {
+            if (x < 0)
+                x += config.box[d];
+            else if (x >= config.box[d])
+                x -= config.box[d];
+        }
+        r.x[d] = x;
+        r.v[d] = flightVelocity(r.v[d], g, dt);
+    }
+    r.tst = t;
+}
+
+template void flyRecordTo<2>(ParticleRecord&, Real, const EngineConfig&) noexcept;
+template void flyRecordTo<3>(ParticleRecord&, Real, const EngineConfig&) noexcept;
+
+template <int D>
 std::vector<ParticleRecord> ParallelEngine<D>::gatherNow() {
     std::vector<ParticleRecord> mine = m_kernel->records(true);
-    for (auto& r : mine) {
-        const Real dt = m_barrier - r.tst;
-        for (int d = 0; d < D; ++d) {
-            const Real g = m_config.gravity[d];
-            Real x = flightPosition(r.x[d], r.v[d], g, dt);
-            if (m_config.periodic[d]) {
-                if (x < 0)
-                    x += m_config.box[d];
-                else if (x >= m_config.box[d])
-                    x -= m_config.box[d];
-            }
-            r.x[d] = x;
-            r.v[d] = flightVelocity(r.v[d], g, dt);
-        }
-        r.tst = m_barrier;
-    }
+    for (auto& r : mine) flyRecordTo<D>(r, m_barrier, m_config);
     std::vector<ParticleRecord> all;
     for (const auto& b : m_comm.gather(packRecords(mine))) unpackRecords(b, all);
     std::sort(all.begin(), all.end(),

@@ -53,6 +53,11 @@ struct ParallelStats {
     double rebuildSeconds = 0;        ///< [s] checkpoints, rollbacks, redistributions
 };
 
+/// The record's particle in free flight to time t >= r.tst [s]: position (wrapped into the box
+/// on periodic axes) and velocity at t, tst = t; its scheduled event untouched.
+template <int D>
+void flyRecordTo(ParticleRecord& r, Real t, const EngineConfig& config) noexcept;
+
 template <int D>
 class ParallelEngine {
 public:
@@ -78,7 +83,9 @@ public:
     /// tEnd; time() is then that of the last collision, exactly where the serial engine's
     /// runCollisions stops (the section that passes the count is repeated up to the k-th
     /// collision in the global (time, id) order), or tEnd. Stops early when interrupted or when
-    /// no collision happens over 64 sections (stalled() is then Stall::NoCollision).
+    /// no collision happens over 64 sections (stalled() is then Stall::NoCollision). Every run
+    /// call stops, back at the last barrier, when a rank's clock stands still over a watchdog
+    /// window (Stall::Clock: an inelastic collapse).
     void runCollisions(std::uint64_t collisions, Real tEnd = kNoEvent);
     Real time() const noexcept { return m_barrier; }
     bool interrupted() const noexcept { return m_interrupted; }
@@ -112,6 +119,8 @@ private:
     /// rebuilds the kernels; `owned` are this rank's owned records (or every record when
     /// `everyRecord`, then no exchange is needed).
     void distribute(std::vector<ParticleRecord> owned, bool everyRecord, const EngineGlobals& globals);
+    /// The spec's three-rank moves are made (and the events per cell counted for them).
+    bool balancing() const noexcept { return m_parallel.loadBalancing && m_comm.size() >= 3; }
     /// The sections up to tEnd or the collision count `target` (~0: none).
     void run(Real tEnd, std::uint64_t target);
     /// One section: every event and record whose key is below `limit`. True when every rank
@@ -158,6 +167,7 @@ private:
     std::vector<EventKey> m_collisionLog;  ///< this section's collisions (count stops only)
     bool m_logging = false;
     bool m_interrupted = false;
+    bool m_domainStalled = false;  ///< a section ended because a rank's clock stood still
     Stall m_stall = Stall::None;
     ParallelStats m_stats;
 };
