@@ -238,6 +238,7 @@ void Engine<D, Queue>::rescheduleAll() noexcept {
     m_queue.setTieKeys(m_id.data());  // before reset, which already compares keys
     m_queue.reset(size());
     for (std::uint32_t s = 0; s < size(); ++s) schedule(s);
+    m_queue.retune();
 }
 
 template <int D, class Queue>

@@ -154,6 +154,7 @@ Engine<D, Queue>::Engine(EngineConfig config, const DomainLayout& layout, const 
         if (m_domain) scheduleDomainBorder(s);
     }
     for (const std::uint32_t s : predict) m_domain ? scheduleDomain(s) : schedule(s);
+    m_queue.retune();
     resetWatchdog();
 }
 

@@ -173,6 +173,12 @@ void CalendarQueue::rebuild() noexcept {
     }
 }
 
+void CalendarQueue::retune() noexcept {
+    if (m_node.empty()) return;
+    rebuildAll();
+    settle();
+}
+
 void CalendarQueue::rebuildAll() noexcept {
     for (std::uint32_t b = 0; b < m_bins; ++b) {
         std::uint32_t i = m_head[b];

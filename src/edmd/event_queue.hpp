@@ -78,6 +78,8 @@ class AddressableHeap {
 public:
     /// n particles, every time +infinity.
     void reset(std::uint32_t n);
+    /// After many set() calls in a row (a whole schedule built): nothing to re-tune here.
+    void retune() noexcept {}
     /// Adds particles up to n (new ones at +infinity), keeping the others' times. O(added).
     void grow(std::uint32_t n);
     /// Orders equal times by key[i] (an array indexed like the queue; it must outlive the use).
@@ -110,6 +112,8 @@ private:
 class TournamentTree {
 public:
     void reset(std::uint32_t n);
+    /// After many set() calls in a row (a whole schedule built): nothing to re-tune here.
+    void retune() noexcept {}
     void grow(std::uint32_t n);
     void setTieKeys(const std::uint32_t* key) noexcept { m_tie.key = key; }
     void set(std::uint32_t i, Real t) noexcept;
@@ -138,6 +142,10 @@ private:
 class CalendarQueue {
 public:
     void reset(std::uint32_t n);
+    /// After many set() calls in a row (a whole schedule built): the bin width from all pending
+    /// times. Without it the first window is cut from the first event alone (1 s wide), and a
+    /// queue that is rebuilt often (the parallel kernel after a rollback) scans long bins.
+    void retune() noexcept;
     void grow(std::uint32_t n);
     void setTieKeys(const std::uint32_t* key) noexcept { m_tie.key = key; }
     void set(std::uint32_t i, Real t) noexcept;
