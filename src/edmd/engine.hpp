@@ -122,6 +122,10 @@ enum class CellRole : std::uint8_t { Foreign = 0, Interior = 1, Border = 2, Halo
 struct DomainLayout {
     std::array<int, 3> cells{1, 1, 1};  ///< cells per axis of the global grid
     std::vector<CellRole> role;         ///< per cell index (x fastest); empty: every cell owned
+    /// Per cell index: 1 for an interior cell with a border cell among its 3^D neighbours. A
+    /// collision of a particle there can reach a border cell (its partner stays within those
+    /// 3^D cells until the collision), so it is announced as a border event.
+    std::vector<std::uint8_t> fringe;
     std::uint32_t globalParticles = 0;  ///< N: ids are 0 .. N-1
 };
 
@@ -216,6 +220,10 @@ public:
     /// virtual copies (no events of their own, spec 3.6).
     Engine(EngineConfig config, const DomainLayout& layout, const EngineGlobals& globals,
            std::vector<ParticleRecord> records);
+    /// An exact copy (every array, the queues, the domain data): the parallel engine's rollback
+    /// copy, taken and restored at memory speed instead of from records.
+    Engine(const Engine& other);
+    Engine& operator=(const Engine& other);
     /// Every particle's record (owned ones only if realOnly), sorted by id; events as scheduled.
     std::vector<ParticleRecord> records(bool realOnly) const;
     EngineGlobals globals() const;
@@ -260,8 +268,9 @@ public:
     /// balancing needs).
     void countCellEvents();
     /// Simulated causality error (tests of the rollback): the first record received after
-    /// `events` more local events is treated as late.
+    /// `events` more local events is treated as late (kNever: none).
     void injectCausalityError(std::uint64_t events) noexcept;
+    static constexpr std::uint64_t kNever = ~std::uint64_t{0};
     /// Appends the key of every particle collision executed from now on to `log` (nullptr: no
     /// log): the parallel engine's collision-count stops find the k-th collision of a section.
     void setCollisionLog(std::vector<EventKey>* log) noexcept;
@@ -435,6 +444,7 @@ private:
     };
     struct DomainData {
         std::vector<CellRole> role;             ///< per cell index
+        std::vector<std::uint8_t> fringe;       ///< per cell index (DomainLayout::fringe)
         std::vector<std::uint32_t> cellEvents;  ///< per cell index: events since takeCellEvents (if counted)
         AddressableHeap border;                 ///< per slot: the time of its event if a border event
         std::vector<std::uint8_t> dead;         ///< per slot: left this rank's cells (slot not reused)

@@ -111,6 +111,8 @@ Engine<D, Queue>::Engine(EngineConfig config, const DomainLayout& layout, const 
     if (!layout.role.empty()) {
         m_domain = std::make_unique<DomainData>();
         m_domain->role = layout.role;
+        m_domain->fringe = layout.fringe;
+        m_domain->fringe.resize(layout.role.size(), 0);
         m_domain->border.setTieKeys(m_id.data());
         m_domain->border.reset(n);
         m_domain->dead.assign(n, 0);
@@ -156,6 +158,57 @@ Engine<D, Queue>::Engine(EngineConfig config, const DomainLayout& layout, const 
     for (const std::uint32_t s : predict) m_domain ? scheduleDomain(s) : schedule(s);
     m_queue.retune();
     resetWatchdog();
+}
+
+template <int D, class Queue>
+Engine<D, Queue>::Engine(const Engine& other) : m_config(other.m_config) {
+    *this = other;
+}
+
+template <int D, class Queue>
+Engine<D, Queue>& Engine<D, Queue>::operator=(const Engine& o) {
+    if (this == &o) return *this;
+    m_config = o.m_config;
+    m_s = o.m_s;
+    m_event = o.m_event;
+    m_cellOf = o.m_cellOf;
+    m_slot = o.m_slot;
+    m_id = o.m_id;
+    m_radius = o.m_radius;
+    m_mass = o.m_mass;
+    m_uniformRadius = o.m_uniformRadius;
+    m_uniformMass = o.m_uniformMass;
+    m_omega = o.m_omega;
+    m_lastCollision = o.m_lastCollision;
+    m_head = o.m_head;
+    m_queue = o.m_queue;
+    m_cells = o.m_cells;
+    m_forcedCells = o.m_forcedCells;
+    m_stride = o.m_stride;
+    m_cellEdge = o.m_cellEdge;
+    m_invCellEdge = o.m_invCellEdge;
+    m_regridTime = o.m_regridTime;
+    m_maxRadius0 = o.m_maxRadius0;
+    m_gravity = o.m_gravity;
+    m_now = o.m_now;
+    m_virial = o.m_virial;
+    m_dissipated = o.m_dissipated;
+    m_nextSort = o.m_nextSort;
+    m_stats = o.m_stats;
+    m_stall = o.m_stall;
+    m_watch = o.m_watch;
+    m_checkAt = o.m_checkAt;
+    m_interrupted = o.m_interrupted;
+    if (!o.m_domain) {
+        m_domain.reset();
+    } else {
+        if (!m_domain) m_domain = std::make_unique<DomainData>();
+        *m_domain = *o.m_domain;
+    }
+    // The queues compare ties through this engine's ids, not the source's.
+    m_queue.setTieKeys(m_id.data());
+    if (m_domain) m_domain->border.setTieKeys(m_id.data());
+    return *this;
 }
 
 template <int D, class Queue>
@@ -273,7 +326,9 @@ void Engine<D, Queue>::scheduleDomainBorder(std::uint32_t s) noexcept {
     const Event& ev = m_event[s];
     bool border = roleOf(s) == CellRole::Border;
     if (!border && ev.partner < kMaxParticles) {
-        border = roleOf(ev.partner) != CellRole::Interior;
+        // The partner may reach a border cell before the collision (partners in a cell next to
+        // this one stay within its 3^D cells): a collision in a fringe cell is announced too.
+        border = dom.fringe[cellIndex(m_cellOf[s])] != 0 || roleOf(ev.partner) != CellRole::Interior;
     } else if (!border && ev.partner >= kCellBase && ev.partner != kNone) {
         const std::uint32_t face = ev.partner - kCellBase;
         const int d = static_cast<int>(face / 2);
@@ -355,7 +410,8 @@ void Engine<D, Queue>::takeCellEvents(std::vector<std::uint64_t>& perCell) {
 
 template <int D, class Queue>
 void Engine<D, Queue>::injectCausalityError(std::uint64_t events) noexcept {
-    if (m_domain) m_domain->injectAt = m_stats.events + events;
+    // kNever disarms it.
+    if (m_domain) m_domain->injectAt = events == kNever ? kNever : m_stats.events + events;
 }
 
 template <int D, class Queue>
@@ -564,6 +620,8 @@ std::uint64_t Engine<D, Queue>::runDomain(EventKey limit) {
     template Engine<D, Q>::Engine(EngineConfig, const DomainLayout&, const EngineGlobals&,                \
                                   std::vector<ParticleRecord>);                                           \
     template std::vector<ParticleRecord> Engine<D, Q>::records(bool) const;                               \
+    template Engine<D, Q>::Engine(const Engine&);                                                         \
+    template Engine<D, Q>& Engine<D, Q>::operator=(const Engine&);                                        \
     template EngineGlobals Engine<D, Q>::globals() const;                                                 \
     template std::uint32_t Engine<D, Q>::cellIndexOf(const std::array<std::uint16_t, 3>&) const noexcept; \
     template EventKey Engine<D, Q>::nextKey() const noexcept;                                             \

@@ -76,8 +76,8 @@ public:
     /// Continues event for event from a checkpoint written on any number of ranks.
     void loadState(std::istream& in, const edmd::EngineConfig& config) {
         GasCheckpoint state = readGasCheckpoint(in, D);
-        m_engine = std::make_unique<EngineType>(config, edmd::DomainLayout{state.cells, {}, 0}, state.globals,
-                                                std::move(state.records));
+        m_engine = std::make_unique<EngineType>(config, edmd::DomainLayout{state.cells, {}, {}, 0},
+                                                state.globals, std::move(state.records));
         m_view = {};
     }
 

@@ -239,6 +239,14 @@ void ParallelEngine<D>::buildLayout() {
                 }
         }
     }
+    // Fringe: interior cells with a border cell among their 3^D neighbours.
+    m_layout.fringe.assign(count, 0);
+    for (std::size_t cell = 0; cell < count; ++cell) {
+        if (m_layout.role[cell] != CellRole::Interior) continue;
+        forEachCellAround(static_cast<std::uint32_t>(cell), [&](std::uint32_t index) {
+            if (m_layout.role[index] != CellRole::Interior) m_layout.fringe[cell] = 1;
+        });
+    }
     std::sort(m_neighbours.begin(), m_neighbours.end());
     for (std::size_t k = 0; k < m_neighbours.size(); ++k)
         m_neighbourIndex[static_cast<std::size_t>(m_neighbours[k])] = static_cast<int>(k);
@@ -307,7 +315,11 @@ void ParallelEngine<D>::commitBarrier(Real t) {
     m_barrier = t;
     m_kernel->takeCellEvents(m_cellLoad);
     m_checkpointGlobals = m_kernel->globals();
-    m_checkpoint = m_kernel->records(false);
+    m_kernel->injectCausalityError(Kernel::kNever);  // a forced error belongs to one section
+    if (m_checkpoint)
+        *m_checkpoint = *m_kernel;
+    else
+        m_checkpoint = std::make_unique<Kernel>(*m_kernel);
     m_collisionLog.clear();
     m_stats.rebuildSeconds += elapsedSince(t0);
 }
@@ -316,7 +328,9 @@ template <int D>
 void ParallelEngine<D>::rollback() {
     const double t0 = wallSeconds();
     m_stats.eventsUndone += m_kernel->stats().events - m_checkpointGlobals.stats.events;
-    rebuildKernel(m_checkpointGlobals, m_checkpoint);
+    *m_kernel = *m_checkpoint;
+    m_collisionLog.clear();
+    m_kernel->setCollisionLog(m_logging ? &m_collisionLog : nullptr);
     m_stats.rebuildSeconds += elapsedSince(t0);
 }
 
@@ -417,6 +431,9 @@ Real ParallelEngine<D>::runCareful(Real target, Real past) {
     ++m_stats.carefulSections;
     for (;;) {
         exchange(nullptr, nullptr);
+        // Impossible in global event order; a dropped late record would go unnoticed here.
+        if (m_kernel->causalityError() < kNoEvent)
+            throw std::logic_error("edmd parallel: a causality error in an event-by-event section");
         const double t0 = wallSeconds();
         const EventKey next = m_kernel->nextKey();
         std::array<double, 1> t{next.time};
@@ -653,7 +670,7 @@ EngineGlobals ParallelEngine<D>::gatherState(std::vector<ParticleRecord>& record
 
 template <int D>
 std::size_t ParallelEngine<D>::memoryBytes() const noexcept {
-    return m_kernel->memoryBytes() + m_checkpoint.capacity() * sizeof(ParticleRecord) +
+    return m_kernel->memoryBytes() + (m_checkpoint ? m_checkpoint->memoryBytes() : 0) +
            m_owner.capacity() * sizeof(std::int32_t) + m_layout.role.capacity() +
            m_cellLoad.capacity() * sizeof(std::uint64_t);
 }

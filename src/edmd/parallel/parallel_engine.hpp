@@ -159,7 +159,7 @@ private:
     std::unique_ptr<Kernel> m_kernel;
     // Rollback copy made at the last barrier (spec 3.4: one copy).
     EngineGlobals m_checkpointGlobals;
-    std::vector<ParticleRecord> m_checkpoint;
+    std::unique_ptr<Kernel> m_checkpoint;   ///< an exact copy of the kernel at the barrier
     Real m_barrier = 0;                     ///< [s] time of the last barrier
     Real m_interval = 0;                    ///< [s] current barrier interval
     std::vector<std::uint64_t> m_cellLoad;  ///< events per cell since the last balancing
