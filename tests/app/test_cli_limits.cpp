@@ -194,21 +194,8 @@ TEST(Cli, GrowingSpheresStartAtTheSceneFractionAndRunCold) {
 // time, instead of hanging.
 TEST(Cli, ZenoBouncingStopsWithDiagnosis) {
     const test::ScratchDir scratch;
-    test::writeText(scratch.path / "zeno.toml", R"([run]
-engine = "edmd"
-dimension = 2
-end_time = 100.0
-[edmd]
-count = 2
-box = [10.0, 10.0]
-periodic = [true, false]
-radius = 1.0
-temperature = 1.0
-equilibrate = 0
-wall_restitution = 0.5
-tc = 0
-gravity = [0.0, -1.0]
-)");
+    std::filesystem::copy_file(GRANULAB_SOURCE_DIR "/tests/data/zeno_bounce.toml",
+                               scratch.path / "zeno.toml");
     const auto r = test::runGranulab("run zeno.toml -q --out out", scratch.path, 120);
     EXPECT_EQ(r.status, 3) << r.output;
     EXPECT_NE(r.output.find("simulated time stood still"), std::string::npos) << r.output;

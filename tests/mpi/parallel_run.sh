@@ -55,24 +55,8 @@ done
 
 # An inelastic collapse (a disk bouncing to rest on a floor without the TC model) stops on 2
 # ranks with the watchdog's diagnosis and exit status 3, as in a serial run, instead of hanging.
-cat > "$work/zeno.toml" <<'TOML'
-[run]
-engine = "edmd"
-dimension = 2
-end_time = 100.0
-[edmd]
-count = 2
-box = [10.0, 10.0]
-periodic = [true, false]
-radius = 1.0
-temperature = 1.0
-equilibrate = 0
-wall_restitution = 0.5
-tc = 0
-gravity = [0.0, -1.0]
-TOML
 status=0
-on_ranks 2 $flags "$granulab" run "$work/zeno.toml" -q --out "$work/zeno" 2>"$work/zeno.log" || status=$?
+on_ranks 2 $flags "$granulab" run "$(dirname "$0")/../data/zeno_bounce.toml" -q --out "$work/zeno" 2>"$work/zeno.log" || status=$?
 if [ "$status" -ne 3 ] || ! grep -q "inelastic collapse" "$work/zeno.log"; then
     echo "FAIL: the collapse on 2 ranks ended with status $status:"
     cat "$work/zeno.log"
