@@ -38,6 +38,7 @@ struct Options {
     double restitution = 1;            ///< eps (< 1: a cooling, clustering gas; TC model on)
     bool serial = false;
     bool balance = true;
+    bool fringe = true;
 };
 
 template <int D>
@@ -82,6 +83,7 @@ int run(const Options& o, Communicator& comm) {
     } else {
         ParallelConfig pc;
         pc.loadBalancing = o.balance;
+        pc.fringeBorderEvents = o.fringe;
         ParallelEngine<D> e(comm, c, pc, s.x, s.v, s.radius, s.mass);
         e.runUntil(warm);
         const std::uint64_t before = e.globals().stats.collisions;
@@ -144,6 +146,7 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(0.0, 1.0));
     cli.add_flag("--serial", o.serial, "the serial engine on the same grid (one rank)");
     cli.add_flag("!--no-balance", o.balance, "no load balancing");
+    cli.add_flag("!--no-fringe", o.fringe, "collisions in fringe cells are not announced as border events");
     CLI11_PARSE(cli, argc, argv);
     Communicator& comm = worldCommunicator();
     return o.dim == 2 ? run<2>(o, comm) : run<3>(o, comm);

@@ -241,7 +241,7 @@ void ParallelEngine<D>::buildLayout() {
     }
     // Fringe: interior cells with a border cell among their 3^D neighbours.
     m_layout.fringe.assign(count, 0);
-    for (std::size_t cell = 0; cell < count; ++cell) {
+    for (std::size_t cell = 0; cell < count && m_parallel.fringeBorderEvents; ++cell) {
         if (m_layout.role[cell] != CellRole::Interior) continue;
         forEachCellAround(static_cast<std::uint32_t>(cell), [&](std::uint32_t index) {
             if (m_layout.role[index] != CellRole::Interior) m_layout.fringe[cell] = 1;
@@ -341,9 +341,11 @@ void ParallelEngine<D>::exchange(std::vector<EventKey>* sentMin, std::vector<Eve
     const double t0 = wallSeconds();
     const std::size_t nb = m_neighbours.size();
     m_kernel->drainChanges(m_changes);
-    std::vector<std::vector<ParticleRecord>> out(nb);
+    auto& out = m_outgoing;  // reused step after step: no allocation once warm
+    out.resize(nb);
+    for (auto& o : out) o.clear();
     if (sentMin) sentMin->assign(nb, EventKey{});
-    std::vector<int> to;
+    auto& to = m_recipients;
     for (const auto& ch : m_changes) {
         to.clear();
         recipients(ch.oldCell, to);
@@ -370,7 +372,7 @@ void ParallelEngine<D>::exchange(std::vector<EventKey>* sentMin, std::vector<Eve
         m_comm.send(m_neighbours[k], tag, std::move(b));
     }
     if (announced) announced->assign(nb, EventKey{});
-    std::vector<ParticleRecord> in;
+    auto& in = m_incoming;
     for (std::size_t k = 0; k < nb; ++k) {
         const ByteBuffer b = m_comm.receive(m_neighbours[k], tag);
         const auto h = readAt<StepHeader>(b, 0);
