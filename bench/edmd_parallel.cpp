@@ -46,16 +46,8 @@ int run(const Options& o, Communicator& comm) {
     const auto side = static_cast<int>(std::llround(std::pow(o.particles, 1.0 / D)));
     std::uint64_t count = 1;
     for (int d = 0; d < D; ++d) count *= static_cast<std::uint64_t>(side);
-    const Real L = boxLengthFor(D, static_cast<Real>(count), o.fraction, 1.0);
-    InitialStateSpec spec;
-    spec.box = {L, L, L};
-    spec.count = count;
-    spec.radius = 1;
-    spec.mass = 1;
-    spec.placement = Placement::Lattice;
-    spec.temperature = 1;
-    spec.seed = 1;
-    auto s = makeInitialState<D>(spec);
+    const Real L = unitLatticeEdge(D, count, o.fraction);
+    auto s = unitLatticeGas<D>(count, o.fraction, 1);
     EngineConfig c;
     c.box = {L, L, L};
     c.powerOfTwoCells = true;

@@ -7,10 +7,14 @@
 // SingleProcessCommunicator: rank 0 of 1, every collective the identity.
 // Virtual calls: a few per communication phase (hundreds of events), never per event.
 #pragma once
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <memory>
 #include <span>
+#include <stdexcept>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -18,6 +22,27 @@ namespace granulab {
 
 /// A message payload: plain bytes (the sender packs POD records, the receiver unpacks them).
 using ByteBuffer = std::vector<std::byte>;
+
+/// The bytes of plain values (records, keys) for a message.
+template <class T>
+ByteBuffer packPod(std::span<const T> values) {
+    static_assert(std::is_trivially_copyable_v<T>, "packPod: plain values only");
+    ByteBuffer b(values.size_bytes());
+    if (!b.empty()) std::memcpy(b.data(), values.data(), b.size());
+    return b;
+}
+
+/// Appends the values held in `bytes` from byte `from` on to `out`; throws std::runtime_error
+/// when the bytes are not a whole number of values.
+template <class T>
+void unpackPod(const ByteBuffer& bytes, std::vector<T>& out, std::size_t from = 0) {
+    static_assert(std::is_trivially_copyable_v<T>, "unpackPod: plain values only");
+    const std::size_t size = bytes.size() - std::min(from, bytes.size());
+    if (size % sizeof(T) != 0) throw std::runtime_error("a message that is not a whole number of records");
+    const std::size_t at = out.size();
+    out.resize(at + size / sizeof(T));
+    if (size) std::memcpy(out.data() + at, bytes.data() + from, size);
+}
 
 class Communicator {
 public:

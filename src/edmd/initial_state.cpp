@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/rng.hpp"
+#include "edmd/kinetic_theory.hpp"
 
 namespace granulab::edmd {
 
@@ -170,5 +171,26 @@ GasState<D> makeInitialState(const InitialStateSpec& spec) {
 
 template GasState<2> makeInitialState<2>(const InitialStateSpec&);
 template GasState<3> makeInitialState<3>(const InitialStateSpec&);
+
+Real unitLatticeEdge(int dim, std::uint64_t count, Real nu) {
+    return boxLengthFor(dim, static_cast<Real>(count), nu, 1.0);
+}
+
+template <int D>
+GasState<D> unitLatticeGas(std::uint64_t count, Real nu, std::uint64_t seed) {
+    const Real L = unitLatticeEdge(D, count, nu);
+    InitialStateSpec spec;
+    spec.box = {L, L, L};
+    spec.count = count;
+    spec.radius = 1;
+    spec.mass = 1;
+    spec.placement = Placement::Lattice;
+    spec.temperature = 1;
+    spec.seed = seed;
+    return makeInitialState<D>(spec);
+}
+
+template GasState<2> unitLatticeGas<2>(std::uint64_t, Real, std::uint64_t);
+template GasState<3> unitLatticeGas<3>(std::uint64_t, Real, std::uint64_t);
 
 }  // namespace granulab::edmd

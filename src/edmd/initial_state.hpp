@@ -37,6 +37,14 @@ struct GasState {
 template <int D>
 GasState<D> makeInitialState(const InitialStateSpec& spec);
 
+/// The standard gas of the tests and benchmarks: `count` particles of radius 1 and mass 1 at
+/// T = 1 on the lattice (spec 4.2 steps 1-2) in a periodic cube of edge unitLatticeEdge [m] holding
+/// them at volume fraction nu.
+template <int D>
+GasState<D> unitLatticeGas(std::uint64_t count, Real nu, std::uint64_t seed);
+/// [m] edge of the cube of unitLatticeGas.
+Real unitLatticeEdge(int dim, std::uint64_t count, Real nu);
+
 /// Volume (2D: area) of a D-ball of radius a [m^D].
 inline Real ballVolume(int dim, Real a) noexcept {
     return dim == 2 ? kPi * a * a : 4.0 / 3.0 * kPi * a * a * a;

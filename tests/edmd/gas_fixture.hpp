@@ -63,16 +63,8 @@ GasState<D> latticeGas(int n, Real L, Real a, std::uint64_t seed) {
 template <int D>
 Engine<D> makeGas(std::uint64_t count, Real nu, std::uint64_t seed, const Restitution& rules = {},
                   Real tc = 0) {
-    const Real L = edmd::boxLengthFor(D, static_cast<Real>(count), nu, 1.0);
-    InitialStateSpec spec;
-    spec.box = {L, L, L};
-    spec.count = count;
-    spec.radius = 1;
-    spec.mass = 1;
-    spec.placement = Placement::Lattice;
-    spec.temperature = 1;
-    spec.seed = seed;
-    auto s = makeInitialState<D>(spec);
+    const Real L = unitLatticeEdge(D, count, nu);
+    auto s = unitLatticeGas<D>(count, nu, seed);
     EngineConfig c;
     c.box = {L, L, L};
     c.restitution = rules;

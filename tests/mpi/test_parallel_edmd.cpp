@@ -10,7 +10,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 
 #include "../edmd/gas_fixture.hpp"
 #include "core/communicator.hpp"
@@ -172,11 +171,9 @@ TEST(ParallelEdmd, ResumeOnAnotherRankCountAndOnTheSerialEngine) {
     std::vector<ParticleRecord> state;
     const EngineGlobals g = first.gatherState(state);
     // Every rank gets the records (as a resumed run reads its checkpoint).
-    ByteBuffer bytes(state.size() * sizeof(ParticleRecord));
-    if (!bytes.empty()) std::memcpy(bytes.data(), state.data(), bytes.size());
-    bytes = comm.broadcast(std::move(bytes));
-    state.resize(bytes.size() / sizeof(ParticleRecord));
-    std::memcpy(state.data(), bytes.data(), bytes.size());
+    const ByteBuffer bytes = comm.broadcast(packPod(std::span<const ParticleRecord>(state)));
+    state.clear();
+    unpackPod(bytes, state);
     first.runUntil(4.0);
     const auto uninterrupted = first.gatherNow();
     ParallelEngine<2> resumed(comm, s.config, pc, g, state);

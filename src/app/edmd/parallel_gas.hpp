@@ -6,7 +6,6 @@
 // Outputs read the view, which is filled on the root rank only.
 #pragma once
 #include <algorithm>
-#include <cstring>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -101,13 +100,7 @@ public:
     /// positions elsewhere).
     void loadState(std::istream& in, const edmd::EngineConfig& config) {
         GasCheckpoint state = readGasCheckpoint(in, D);
-        edmd::EngineConfig power = config;
-        power.powerOfTwoCells = true;
-        Real amax = 0;
-        for (const auto& r : state.records) amax = std::max(amax, r.radius0);
-        const auto grid =
-            edmd::chooseCellGrid<D>(power, static_cast<std::uint32_t>(state.records.size()), amax);
-        if (grid != state.cells)
+        if (edmd::ParallelEngine<D>::gridFor(config, state.records) != state.cells)
             for (auto& r : state.records) {
                 edmd::flyRecordTo<D>(r, state.globals.now, config);
                 r.eventKind = 4;  // predicted now; the cell is found from the position
@@ -170,13 +163,10 @@ public:
 
 private:
     /// The root's records on every rank.
-    std::vector<edmd::ParticleRecord> broadcastRecords(std::vector<edmd::ParticleRecord> records) {
-        ByteBuffer bytes(records.size() * sizeof(edmd::ParticleRecord));
-        if (!bytes.empty()) std::memcpy(bytes.data(), records.data(), bytes.size());
-        bytes = m_comm.broadcast(std::move(bytes));
-        records.resize(bytes.size() / sizeof(edmd::ParticleRecord));
-        if (!bytes.empty()) std::memcpy(records.data(), bytes.data(), bytes.size());
-        return records;
+    std::vector<edmd::ParticleRecord> broadcastRecords(const std::vector<edmd::ParticleRecord>& records) {
+        std::vector<edmd::ParticleRecord> all;
+        unpackPod(m_comm.broadcast(packPod(std::span<const edmd::ParticleRecord>(records))), all);
+        return all;
     }
     /// The summed globals and memory of all ranks (after every collective call).
     void refresh() {

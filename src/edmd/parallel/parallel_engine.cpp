@@ -42,19 +42,12 @@ T readAt(const ByteBuffer& buffer, std::size_t at) {
 }
 
 ByteBuffer packRecords(const std::vector<ParticleRecord>& records) {
-    ByteBuffer b(records.size() * sizeof(ParticleRecord));
-    if (!records.empty()) std::memcpy(b.data(), records.data(), b.size());
-    return b;
+    return packPod(std::span<const ParticleRecord>(records));
 }
 
 /// Appends the records held in b from byte `from` on to `out`.
 void unpackRecords(const ByteBuffer& b, std::vector<ParticleRecord>& out, std::size_t from = 0) {
-    const std::size_t bytes = b.size() - std::min(from, b.size());
-    if (bytes % sizeof(ParticleRecord) != 0) throw std::runtime_error("edmd parallel: bad record message");
-    const std::size_t n = bytes / sizeof(ParticleRecord);
-    const std::size_t at = out.size();
-    out.resize(at + n);
-    if (n) std::memcpy(out.data() + at, b.data() + from, bytes);
+    unpackPod(b, out, from);
 }
 
 double elapsedSince(double t0) {
@@ -113,13 +106,10 @@ void ParallelEngine<D>::start(const EngineGlobals& globals, std::vector<Particle
         throw std::invalid_argument("edmd::ParallelEngine: growing spheres run on the serial engine only");
     m_config.powerOfTwoCells = true;
     m_globalCount = static_cast<std::uint32_t>(all.size());
-    Real amax = 0;
-    for (auto& r : all) {
+    for (auto& r : all)
         if (r.id >= all.size())
             throw std::invalid_argument("edmd::ParallelEngine: particle ids must be 0 .. N-1");
-        amax = std::max(amax, r.radius0);
-    }
-    m_cells = chooseCellGrid<D>(m_config, m_globalCount, amax);
+    m_cells = gridFor(m_config, all);
     std::array<int, D> cells;
     for (int d = 0; d < D; ++d) cells[d] = m_cells[d];
     m_morton = std::make_unique<MortonGrid<D>>(cells);
@@ -149,6 +139,15 @@ void ParallelEngine<D>::start(const EngineGlobals& globals, std::vector<Particle
     if (!(m_interval > 0)) m_interval = 1.0;
     m_interval = std::min(m_interval, m_parallel.maxSyncInterval);
     commitBarrier(m_barrier);
+}
+
+template <int D>
+std::array<int, 3> ParallelEngine<D>::gridFor(EngineConfig config,
+                                              const std::vector<ParticleRecord>& records) {
+    config.powerOfTwoCells = true;
+    Real amax = 0;
+    for (const auto& r : records) amax = std::max(amax, r.radius0);
+    return chooseCellGrid<D>(config, static_cast<std::uint32_t>(records.size()), amax);
 }
 
 template <int D>
@@ -474,21 +473,15 @@ EventKey ParallelEngine<D>::kthCollision(std::uint64_t k) {
     // Each rank's log is in its own key order; the k smallest of all are among the first k of
     // each. The root merges them and tells everybody.
     const std::size_t mine = static_cast<std::size_t>(std::min<std::uint64_t>(k, m_collisionLog.size()));
-    ByteBuffer b(mine * sizeof(EventKey));
-    if (mine) std::memcpy(b.data(), m_collisionLog.data(), b.size());
     ByteBuffer answer;
-    const std::vector<ByteBuffer> parts = m_comm.gather(std::move(b));
+    const std::vector<ByteBuffer> parts =
+        m_comm.gather(packPod(std::span<const EventKey>(m_collisionLog.data(), mine)));
     if (m_comm.root()) {
         std::vector<EventKey> all;
-        for (const auto& part : parts) {
-            const std::size_t at = all.size();
-            all.resize(at + part.size() / sizeof(EventKey));
-            if (!part.empty()) std::memcpy(all.data() + at, part.data(), part.size());
-        }
+        for (const auto& part : parts) unpackPod(part, all);
         if (all.size() < k) throw std::logic_error("edmd parallel: fewer logged collisions than counted");
         std::nth_element(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(k - 1), all.end());
-        answer.resize(sizeof(EventKey));
-        std::memcpy(answer.data(), &all[k - 1], sizeof(EventKey));
+        append(answer, all[k - 1]);
     }
     answer = m_comm.broadcast(std::move(answer));
     return readAt<EventKey>(answer, 0);

@@ -80,6 +80,10 @@ public:
                    const EngineGlobals& globals, std::vector<ParticleRecord> records);
     ~ParallelEngine();
 
+    /// The grid (cells per axis) a ParallelEngine takes for these records under `config`: the
+    /// serial engine's choice with power-of-two counts.
+    static std::array<int, 3> gridFor(EngineConfig config, const std::vector<ParticleRecord>& records);
+
     /// Runs every rank until all events before tEnd [s] are done; time() is then tEnd. Stops
     /// early, at a barrier, when interruptRequested() on any rank (interrupted() is then true).
     void runUntil(Real tEnd);
