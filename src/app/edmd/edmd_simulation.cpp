@@ -266,6 +266,10 @@ public:
             "s, ",
             kVersion, D, m_engine.size(), D == 2 ? "disks" : "spheres", m_setup.volumeFraction, E.restitution,
             m_setup.tE, m_setup.config.tc);
+        if (m_engine.ranks() > 1) {
+            const auto cells = m_engine.cellsPerAxis();
+            s += fmt::format("{} MPI ranks ({} cells per axis), ", m_engine.ranks(), cells[0]);
+        }
         if (m_setup.endCollisions > 0)
             return s + fmt::format("{} collisions -> {}", m_setup.endCollisions, dir);
         return s + fmt::format("to t = {:.6g} s{} -> {}", m_setup.endTime,
