@@ -233,8 +233,9 @@ public:
     /// particles (a border event, spec 3.6, or a pending update): what a step announces.
     EventKey nextKey() const noexcept;
     EventKey nextBorderKey() const noexcept;
-    /// Executes events and received updates in key order while their key is below `limit`.
-    std::uint64_t runDomain(EventKey limit);
+    /// Executes events and received updates in key order while their key is below `limit`;
+    /// with stopAfterBorderEvent, stops after the first border event (spec 3.8 step 3).
+    std::uint64_t runDomain(EventKey limit, bool stopAfterBorderEvent = false);
     /// runDomain stopped because the clock stood still over a watchdog window (an inelastic
     /// collapse); it does nothing more.
     bool domainStalled() const noexcept { return m_domain && m_domain->stalled; }

@@ -381,9 +381,14 @@ EventKey Engine<D, Queue>::nextBorderKey() const noexcept {
     if (!m_domain) return nextKey();
     EventKey k;
     if (size() > 0) k = {m_domain->border.topTime(), m_id[m_domain->border.top()], 1};
-    if (!m_domain->pending.empty()) {
-        const ParticleRecord& r = m_domain->pending.front().record;
-        k = std::min(k, EventKey{r.tst, r.id});
+    // A pending update of a particle that is (or becomes) owned here: this rank predicts it at
+    // the update's time, and the new event can be a border event. Updates of virtual copies
+    // create no event here (events naming an old copy are annulled at their own, later time).
+    for (const PendingRecord& p : m_domain->pending) {
+        const ParticleRecord& r = p.record;
+        const CellRole role = m_domain->role[cellIndexOf(r.cell)];
+        if ((role == CellRole::Interior || role == CellRole::Border) && EventKey{r.tst, r.id} < k)
+            k = EventKey{r.tst, r.id};
     }
     return k;
 }
@@ -540,10 +545,12 @@ void Engine<D, Queue>::applyReceivedUntil(Real t) {
 }
 
 template <int D, class Queue>
-std::uint64_t Engine<D, Queue>::runDomain(EventKey limit) {
+std::uint64_t Engine<D, Queue>::runDomain(EventKey limit, bool stopAfterBorderEvent) {
     DomainData& dom = *m_domain;
     std::uint64_t done = 0;
+    bool stopNow = false;
     for (;;) {
+        if (stopNow) break;  // a border event was the last of this step (spec 3.8 step 3)
         const std::uint32_t i = size() > 0 ? m_queue.top() : 0;
         const EventKey ev = size() > 0 ? EventKey{m_queue.topTime(), m_id[i], 1} : EventKey{};
         if (!dom.pending.empty()) {
@@ -571,6 +578,7 @@ std::uint64_t Engine<D, Queue>::runDomain(EventKey limit) {
         ++m_stats.events;
         const Event e = m_event[i];
         const std::uint32_t oldCell = cellIndex(m_cellOf[i]);
+        stopNow = stopAfterBorderEvent && dom.border.time(i) == t;
         if (!dom.cellEvents.empty()) ++dom.cellEvents[oldCell];  // the balancing's load
         if (e.partner < kMaxParticles) {
             const std::uint32_t j = e.partner;
@@ -626,7 +634,7 @@ std::uint64_t Engine<D, Queue>::runDomain(EventKey limit) {
     template std::uint32_t Engine<D, Q>::cellIndexOf(const std::array<std::uint16_t, 3>&) const noexcept; \
     template EventKey Engine<D, Q>::nextKey() const noexcept;                                             \
     template EventKey Engine<D, Q>::nextBorderKey() const noexcept;                                       \
-    template std::uint64_t Engine<D, Q>::runDomain(EventKey);                                             \
+    template std::uint64_t Engine<D, Q>::runDomain(EventKey, bool);                                       \
     template bool Engine<D, Q>::receive(const ParticleRecord&);                                           \
     template Real Engine<D, Q>::causalityError() const noexcept;                                          \
     template void Engine<D, Q>::drainChanges(std::vector<Change>&);                                       \

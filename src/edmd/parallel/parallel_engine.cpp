@@ -353,7 +353,9 @@ void ParallelEngine<D>::exchange(std::vector<EventKey>* sentMin, std::vector<Eve
             const int k = m_neighbourIndex[static_cast<std::size_t>(r)];
             if (k < 0) throw std::logic_error("edmd parallel: a change for a rank that is not a neighbour");
             out[static_cast<std::size_t>(k)].push_back(ch.record);
-            if (sentMin)
+            // Only an update of a particle the recipient owns makes it predict (and perhaps a
+            // border event at that time); updates of its virtual copies create no event there.
+            if (sentMin && m_owner[ch.newCell] == r)
                 (*sentMin)[static_cast<std::size_t>(k)] =
                     std::min((*sentMin)[static_cast<std::size_t>(k)], EventKey{ch.record.tst, ch.record.id});
         }
@@ -419,7 +421,7 @@ bool ParallelEngine<D>::runSection(EventKey limit, Real& errorTime) {
         EventKey end = limit;
         for (std::size_t k = 0; k < m_neighbours.size(); ++k) end = std::min({end, announced[k], sentMin[k]});
         const double t1 = wallSeconds();
-        m_kernel->runDomain(end);
+        m_kernel->runDomain(end, true);
         m_stats.computeSeconds += elapsedSince(t1);
     }
 }
