@@ -234,8 +234,9 @@ public:
     EventKey nextKey() const noexcept;
     EventKey nextBorderKey() const noexcept;
     /// Executes events and received updates in key order while their key is below `limit`;
-    /// with stopAfterBorderEvent, stops after the first border event (spec 3.8 step 3).
-    std::uint64_t runDomain(EventKey limit, bool stopAfterBorderEvent = false);
+    /// stops after the first border event whose key is not below `stopAfterBorderFrom` (the
+    /// announced one: a step ends with it, spec 3.8 step 3).
+    std::uint64_t runDomain(EventKey limit, EventKey stopAfterBorderFrom = EventKey{});
     /// runDomain stopped because the clock stood still over a watchdog window (an inelastic
     /// collapse); it does nothing more.
     bool domainStalled() const noexcept { return m_domain && m_domain->stalled; }
@@ -243,6 +244,9 @@ public:
     /// after the k-th collision: the partner's record made by it is applied, as in the serial
     /// engine, while the events after it wait).
     void applyReceivedUntil(Real t);
+    /// Applies the received updates that come before every scheduled event (and below
+    /// `limit`), in order: what runDomain would do next before any event.
+    void applyPendingInOrder(EventKey limit);
     /// A neighbour's record of a particle in an owned or halo cell (or that left them), applied
     /// at its time tst in key order (queued; applied at once when it is a late virtual copy
     /// that nothing has read since). Returns false on a causality error (spec 3.8 steps 5-6):

@@ -545,12 +545,23 @@ void Engine<D, Queue>::applyReceivedUntil(Real t) {
 }
 
 template <int D, class Queue>
-std::uint64_t Engine<D, Queue>::runDomain(EventKey limit, bool stopAfterBorderEvent) {
+void Engine<D, Queue>::applyPendingInOrder(EventKey limit) {
+    DomainData& dom = *m_domain;
+    while (!dom.pending.empty()) {
+        const EventKey up{dom.pending.front().record.tst, dom.pending.front().record.id};
+        const EventKey ev = size() > 0 ? EventKey{m_queue.topTime(), m_id[m_queue.top()], 1} : EventKey{};
+        if (!(up < ev) || !(up < limit)) break;
+        applyPending();
+    }
+}
+
+template <int D, class Queue>
+std::uint64_t Engine<D, Queue>::runDomain(EventKey limit, EventKey stopAfterBorderFrom) {
     DomainData& dom = *m_domain;
     std::uint64_t done = 0;
     bool stopNow = false;
     for (;;) {
-        if (stopNow) break;  // a border event was the last of this step (spec 3.8 step 3)
+        if (stopNow) break;  // the announced border event was the last of this step (spec 3.8)
         const std::uint32_t i = size() > 0 ? m_queue.top() : 0;
         const EventKey ev = size() > 0 ? EventKey{m_queue.topTime(), m_id[i], 1} : EventKey{};
         if (!dom.pending.empty()) {
@@ -578,7 +589,7 @@ std::uint64_t Engine<D, Queue>::runDomain(EventKey limit, bool stopAfterBorderEv
         ++m_stats.events;
         const Event e = m_event[i];
         const std::uint32_t oldCell = cellIndex(m_cellOf[i]);
-        stopNow = stopAfterBorderEvent && dom.border.time(i) == t;
+        stopNow = dom.border.time(i) == t && !(ev < stopAfterBorderFrom);
         if (!dom.cellEvents.empty()) ++dom.cellEvents[oldCell];  // the balancing's load
         if (e.partner < kMaxParticles) {
             const std::uint32_t j = e.partner;
@@ -634,7 +645,7 @@ std::uint64_t Engine<D, Queue>::runDomain(EventKey limit, bool stopAfterBorderEv
     template std::uint32_t Engine<D, Q>::cellIndexOf(const std::array<std::uint16_t, 3>&) const noexcept; \
     template EventKey Engine<D, Q>::nextKey() const noexcept;                                             \
     template EventKey Engine<D, Q>::nextBorderKey() const noexcept;                                       \
-    template std::uint64_t Engine<D, Q>::runDomain(EventKey, bool);                                       \
+    template std::uint64_t Engine<D, Q>::runDomain(EventKey, EventKey);                                   \
     template bool Engine<D, Q>::receive(const ParticleRecord&);                                           \
     template Real Engine<D, Q>::causalityError() const noexcept;                                          \
     template void Engine<D, Q>::drainChanges(std::vector<Change>&);                                       \
@@ -642,6 +653,7 @@ std::uint64_t Engine<D, Queue>::runDomain(EventKey limit, bool stopAfterBorderEv
     template void Engine<D, Q>::injectCausalityError(std::uint64_t) noexcept;                             \
     template void Engine<D, Q>::setCollisionLog(std::vector<EventKey>*) noexcept;                         \
     template void Engine<D, Q>::applyReceivedUntil(Real);                                                 \
+    template void Engine<D, Q>::applyPendingInOrder(EventKey);                                            \
     template void Engine<D, Q>::takeCellEvents(std::vector<std::uint64_t>&);                              \
     template void Engine<D, Q>::countCellEvents();                                                        \
     template bool Engine<D, Q>::realSlot(std::uint32_t) const noexcept;

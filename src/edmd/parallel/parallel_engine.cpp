@@ -16,15 +16,7 @@ namespace granulab::edmd {
 namespace {
 constexpr int kTagStep = 11;
 constexpr int kTagCareful = 12;
-
-/// Header of a step message: the sender's next border event (spec 3.8 step 1) and the count of
-/// particle records that follow.
-struct StepHeader {
-    Real announceTime = kNoEvent;
-    std::uint32_t announceId = 0;
-    std::uint32_t announceKind = 0;
-    std::uint32_t count = 0;
-};
+constexpr int kTagAnnounce = 13;
 
 template <class T>
 void append(ByteBuffer& buffer, const T& value) {
@@ -334,16 +326,15 @@ void ParallelEngine<D>::rollback() {
 }
 
 template <int D>
-void ParallelEngine<D>::exchange(std::vector<EventKey>* sentMin, std::vector<EventKey>* announced) {
-    // Send: every change since the last exchange to the ranks around its old and new cell,
-    // and this rank's next border event; receive the same from every neighbour (spec 3.8).
+void ParallelEngine<D>::exchange(EventKey limit, std::vector<EventKey>* announced) {
+    // Phase 1: every change since the last exchange to the ranks around its old and new cell;
+    // receive the same from every neighbour (spec 3.8 steps 4-5).
     const double t0 = wallSeconds();
     const std::size_t nb = m_neighbours.size();
     m_kernel->drainChanges(m_changes);
     auto& out = m_outgoing;  // reused step after step: no allocation once warm
     out.resize(nb);
     for (auto& o : out) o.clear();
-    if (sentMin) sentMin->assign(nb, EventKey{});
     auto& to = m_recipients;
     for (const auto& ch : m_changes) {
         to.clear();
@@ -353,35 +344,40 @@ void ParallelEngine<D>::exchange(std::vector<EventKey>* sentMin, std::vector<Eve
             const int k = m_neighbourIndex[static_cast<std::size_t>(r)];
             if (k < 0) throw std::logic_error("edmd parallel: a change for a rank that is not a neighbour");
             out[static_cast<std::size_t>(k)].push_back(ch.record);
-            // Only an update of a particle the recipient owns makes it predict (and perhaps a
-            // border event at that time); updates of its virtual copies create no event there.
-            if (sentMin && m_owner[ch.newCell] == r)
-                (*sentMin)[static_cast<std::size_t>(k)] =
-                    std::min((*sentMin)[static_cast<std::size_t>(k)], EventKey{ch.record.tst, ch.record.id});
         }
     }
-    const EventKey announce = m_kernel->nextBorderKey();
     const int tag = announced ? kTagStep : kTagCareful;
     for (std::size_t k = 0; k < nb; ++k) {
-        ByteBuffer b;
-        append(b, StepHeader{announce.time, announce.id, announce.kind,
-                             static_cast<std::uint32_t>(out[k].size())});
-        const ByteBuffer records = packRecords(out[k]);
-        b.insert(b.end(), records.begin(), records.end());
+        ByteBuffer b = packRecords(out[k]);
         m_stats.recordsSent += out[k].size();
         m_stats.bytesSent += b.size();
         m_comm.send(m_neighbours[k], tag, std::move(b));
     }
-    if (announced) announced->assign(nb, EventKey{});
     auto& in = m_incoming;
     for (std::size_t k = 0; k < nb; ++k) {
         const ByteBuffer b = m_comm.receive(m_neighbours[k], tag);
-        const auto h = readAt<StepHeader>(b, 0);
-        if (announced) (*announced)[k] = {h.announceTime, h.announceId, h.announceKind};
         in.clear();
-        unpackRecords(b, in, sizeof(StepHeader));
-        if (in.size() != h.count) throw std::runtime_error("edmd parallel: record count mismatch");
+        unpackRecords(b, in);
         for (const auto& r : in) m_kernel->receive(r);  // an error is remembered by the kernel
+    }
+    if (announced) {
+        // Phase 2 (spec 3.8 step 1): the received updates that are next in this rank's order
+        // are applied now, so that the particles they give or change here are predicted before
+        // this rank announces its next border event (else a migration or a collision executed
+        // by a neighbour would hold that neighbour back for a step); the announcement is the
+        // earliest border event or pending update of an owned particle.
+        m_kernel->applyPendingInOrder(limit);
+        const EventKey announce = m_announced = m_kernel->nextBorderKey();
+        for (std::size_t k = 0; k < nb; ++k)
+            m_comm.send(m_neighbours[k], kTagAnnounce, packPod(std::span(&announce, 1)));
+        announced->assign(nb, EventKey{});
+        std::vector<EventKey> one;
+        for (std::size_t k = 0; k < nb; ++k) {
+            one.clear();
+            unpackPod(m_comm.receive(m_neighbours[k], kTagAnnounce), one);
+            if (one.size() != 1) throw std::runtime_error("edmd parallel: malformed announcement");
+            (*announced)[k] = one[0];
+        }
     }
     ++m_stats.steps;
     m_stats.communicationSeconds += elapsedSince(t0);
@@ -389,10 +385,10 @@ void ParallelEngine<D>::exchange(std::vector<EventKey>* sentMin, std::vector<Eve
 
 template <int D>
 bool ParallelEngine<D>::runSection(EventKey limit, Real& errorTime) {
-    std::vector<EventKey> sentMin, announced;
+    std::vector<EventKey> announced;
     bool inFlight = false;
     for (;;) {
-        exchange(&sentMin, &announced);
+        exchange(limit, &announced);
         const double t0 = wallSeconds();
         if (inFlight) {
             const std::vector<double> result = m_comm.waitMin();
@@ -417,11 +413,14 @@ bool ParallelEngine<D>::runSection(EventKey limit, Real& errorTime) {
         inFlight = true;
         m_stats.communicationSeconds += elapsedSince(t0);
         if (m_kernel->causalityError() < kNoEvent) continue;  // wait for the others to learn it
-        // Local step end (spec 3.7): the earliest neighbour announcement or record sent to it.
+        // Local step end (spec 3.7): the earliest neighbour announcement; the step also ends
+        // after this rank's announced border event (or a later one that replaced it). An
+        // earlier, unannounced border event (a particle that entered the border zone) does not
+        // end it: the neighbours' steps were not held back by it.
         EventKey end = limit;
-        for (std::size_t k = 0; k < m_neighbours.size(); ++k) end = std::min({end, announced[k], sentMin[k]});
+        for (const EventKey& a : announced) end = std::min(end, a);
         const double t1 = wallSeconds();
-        m_kernel->runDomain(end, true);
+        m_kernel->runDomain(end, m_announced);
         m_stats.computeSeconds += elapsedSince(t1);
     }
 }
@@ -433,7 +432,7 @@ Real ParallelEngine<D>::runCareful(Real target, Real past) {
     // the new barrier time (every event before it done).
     ++m_stats.carefulSections;
     for (;;) {
-        exchange(nullptr, nullptr);
+        exchange(EventKey{}, nullptr);
         // Impossible in global event order; a dropped late record would go unnoticed here.
         if (m_kernel->causalityError() < kNoEvent)
             throw std::logic_error("edmd parallel: a causality error in an event-by-event section");

@@ -142,7 +142,10 @@ private:
     void rebuildKernel(const EngineGlobals& globals, std::vector<ParticleRecord> records);
     /// The section event by event in global order (after an error at the section's start).
     Real runCareful(Real target, Real past);
-    void exchange(std::vector<EventKey>* sentMin, std::vector<EventKey>* announced);
+    /// One step's communication with the neighbours: the changed records both ways, then (when
+    /// `announced` is given) the received updates next in order applied (below `limit`) and
+    /// every rank's next border event both ways.
+    void exchange(EventKey limit, std::vector<EventKey>* announced);
     void commitBarrier(Real t);
     void rollback();
     void balance();
@@ -176,6 +179,7 @@ private:
     std::vector<std::vector<ParticleRecord>> m_outgoing;
     std::vector<ParticleRecord> m_incoming;
     std::vector<int> m_recipients;
+    EventKey m_announced;                  ///< this rank's announcement of the current step
     std::vector<EventKey> m_collisionLog;  ///< this section's collisions (count stops only)
     bool m_logging = false;
     bool m_interrupted = false;
