@@ -342,6 +342,8 @@ private:
     template <bool Gravity>
     void predictFaces(const Subject& p, const CellCoords& c, Prediction& next) const noexcept;
     Neighbourhood neighbourhood(const CellCoords& c) const noexcept;
+    /// Domain mode: [s] the last prediction of a border particle in the 3^D cells around c.
+    Real lastBorderReadAround(const CellCoords& c) const noexcept;
     /// Collisions with the particles of the neighbour cells (edmd Eq. 2.18-2.21).
     template <bool Gravity, bool Growing, bool Uniform>
     void predictPairs(const Subject& p, const Neighbourhood& nb, Prediction& next) const noexcept;
@@ -454,11 +456,13 @@ private:
         AddressableHeap border;                 ///< per slot: the time of its event if a border event
         std::vector<std::uint8_t> dead;         ///< per slot: left this rank's cells (slot not reused)
         std::vector<Change> changes;
-        std::vector<PendingRecord> pending;          ///< received updates, a min-heap by (tst, id, arrival)
-        std::uint64_t arrivals = 0;                  ///< records received so far (the arrival order)
-        Real lastVirtualRead = -kNoEvent;            ///< [s] last time a border particle was predicted
-        Real error = kNoEvent;                       ///< [s] earliest causality error
-        std::uint64_t injectAt = ~std::uint64_t{0};  ///< test hook: event count of a forced error
+        std::vector<PendingRecord> pending;  ///< received updates, a min-heap by (tst, id, arrival)
+        std::uint64_t arrivals = 0;          ///< records received so far (the arrival order)
+        /// Per cell index: [s] the last time a particle in this border cell was predicted (a
+        /// prediction reads the virtual copies in the 3^D cells around it).
+        std::vector<Real> borderRead;
+        Real error = kNoEvent;                          ///< [s] earliest causality error
+        std::uint64_t injectAt = ~std::uint64_t{0};     ///< test hook: event count of a forced error
         std::vector<EventKey>* collisionLog = nullptr;  ///< keys of executed collisions (optional)
         std::uint32_t owned = 0;
         // Progress watchdog of runDomain, as the serial run()'s: the clock must move in a window.

@@ -113,6 +113,7 @@ Engine<D, Queue>::Engine(EngineConfig config, const DomainLayout& layout, const 
         m_domain->role = layout.role;
         m_domain->fringe = layout.fringe;
         m_domain->fringe.resize(layout.role.size(), 0);
+        m_domain->borderRead.assign(layout.role.size(), -kNoEvent);
         m_domain->border.setTieKeys(m_id.data());
         m_domain->border.reset(n);
         m_domain->dead.assign(n, 0);
@@ -345,9 +346,35 @@ void Engine<D, Queue>::scheduleDomainBorder(std::uint32_t s) noexcept {
 template <int D, class Queue>
 void Engine<D, Queue>::scheduleDomain(std::uint32_t s) noexcept {
     // Predicting a border particle reads the virtual particles of the halo (spec 3.6).
-    if (roleOf(s) == CellRole::Border) m_domain->lastVirtualRead = m_now;
+    const std::uint32_t cell = cellIndex(m_cellOf[s]);
+    if (m_domain->role[cell] == CellRole::Border) m_domain->borderRead[cell] = m_now;
     schedule(s);
     scheduleDomainBorder(s);
+}
+
+template <int D, class Queue>
+Real Engine<D, Queue>::lastBorderReadAround(const CellCoords& c) const noexcept {
+    // The 3^D block around c (periodic axes wrap, walls cut it).
+    const auto& read = m_domain->borderRead;
+    Real last = -kNoEvent;
+    const int reach[3] = {1, D > 1 ? 1 : 0, D > 2 ? 1 : 0};
+    for (int dz = -reach[2]; dz <= reach[2]; ++dz)
+        for (int dy = -reach[1]; dy <= reach[1]; ++dy)
+            for (int dx = -reach[0]; dx <= reach[0]; ++dx) {
+                const int delta[3] = {dx, dy, dz};
+                std::uint32_t index = 0;
+                bool inside = true;
+                for (int d = 0; d < D && inside; ++d) {
+                    int k = c[d] + delta[d];
+                    if (k < 0 || k >= m_cells[d]) {
+                        inside = m_config.periodic[d];
+                        k = (k + m_cells[d]) % m_cells[d];
+                    }
+                    index += m_stride[d] * static_cast<std::uint32_t>(k);
+                }
+                if (inside) last = std::max(last, read[index]);
+            }
+    return last;
 }
 
 template <int D, class Queue>
@@ -442,12 +469,18 @@ bool Engine<D, Queue>::receive(const ParticleRecord& r) {
         std::push_heap(dom.pending.begin(), dom.pending.end(), laterRecord<PendingRecord>);
         return true;
     }
-    // Late. Harmless only for a virtual copy that no prediction has read since its time.
+    // Late. Harmless only for a virtual copy that no prediction has read since its time: no
+    // particle next to its old cell or its new one was predicted after it (spec 3.8 step 6;
+    // a collision with it or an annulment check is followed by such a prediction).
     const CellRole role = dom.role[cellIndexOf(r.cell)];
     const std::uint32_t s = m_slot[r.id];
     const bool staysVirtual =
         (role == CellRole::Halo || role == CellRole::Foreign) && (s == kNone || !realSlot(s));
-    if (staysVirtual && dom.lastVirtualRead <= r.tst) {
+    CellCoords newCell{};
+    for (int d = 0; d < D; ++d) newCell[d] = r.cell[d];
+    const bool unread = staysVirtual && lastBorderReadAround(newCell) < r.tst &&
+                        (s == kNone || lastBorderReadAround(m_cellOf[s]) < r.tst);
+    if (unread) {
         applyRecord(r);
         return true;
     }
