@@ -342,8 +342,13 @@ private:
     template <bool Gravity>
     void predictFaces(const Subject& p, const CellCoords& c, Prediction& next) const noexcept;
     Neighbourhood neighbourhood(const CellCoords& c) const noexcept;
-    /// Domain mode: [s] the last prediction of a border particle in the 3^D cells around c.
-    Real lastBorderReadAround(const CellCoords& c) const noexcept;
+    /// Domain mode: visit(cell index) for the 3^D cells around c (periodic axes wrap).
+    template <class Visit>
+    void forEachCellAround(const CellCoords& c, Visit&& visit) const;
+    /// Domain mode: [s] the last prediction of a border or fringe particle around c.
+    Real lastReadAround(const CellCoords& c) const noexcept;
+    /// Domain mode: no particle in the 3^D cells around c has a state later than t [s].
+    bool settledAround(const CellCoords& c, Real t) const noexcept;
     /// Collisions with the particles of the neighbour cells (edmd Eq. 2.18-2.21).
     template <bool Gravity, bool Growing, bool Uniform>
     void predictPairs(const Subject& p, const Neighbourhood& nb, Prediction& next) const noexcept;
@@ -458,9 +463,9 @@ private:
         std::vector<Change> changes;
         std::vector<PendingRecord> pending;  ///< received updates, a min-heap by (tst, id, arrival)
         std::uint64_t arrivals = 0;          ///< records received so far (the arrival order)
-        /// Per cell index: [s] the last time a particle in this border cell was predicted (a
-        /// prediction reads the virtual copies in the 3^D cells around it).
-        std::vector<Real> borderRead;
+        /// Per cell index: [s] the last time a particle in this border or fringe cell was
+        /// predicted (a prediction reads the particles in the 3^D cells around it).
+        std::vector<Real> readTime;
         Real error = kNoEvent;                          ///< [s] earliest causality error
         std::uint64_t injectAt = ~std::uint64_t{0};     ///< test hook: event count of a forced error
         std::vector<EventKey>* collisionLog = nullptr;  ///< keys of executed collisions (optional)

@@ -113,7 +113,7 @@ Engine<D, Queue>::Engine(EngineConfig config, const DomainLayout& layout, const 
         m_domain->role = layout.role;
         m_domain->fringe = layout.fringe;
         m_domain->fringe.resize(layout.role.size(), 0);
-        m_domain->borderRead.assign(layout.role.size(), -kNoEvent);
+        m_domain->readTime.assign(layout.role.size(), -kNoEvent);
         m_domain->border.setTieKeys(m_id.data());
         m_domain->border.reset(n);
         m_domain->dead.assign(n, 0);
@@ -345,18 +345,19 @@ void Engine<D, Queue>::scheduleDomainBorder(std::uint32_t s) noexcept {
 
 template <int D, class Queue>
 void Engine<D, Queue>::scheduleDomain(std::uint32_t s) noexcept {
-    // Predicting a border particle reads the virtual particles of the halo (spec 3.6).
+    // A prediction reads the particles of the 3^D cells around (spec 3.6): in a border cell
+    // the neighbours' virtual copies, in a fringe cell the border particles a neighbour's
+    // collision can change.
     const std::uint32_t cell = cellIndex(m_cellOf[s]);
-    if (m_domain->role[cell] == CellRole::Border) m_domain->borderRead[cell] = m_now;
+    if (m_domain->role[cell] == CellRole::Border || m_domain->fringe[cell]) m_domain->readTime[cell] = m_now;
     schedule(s);
     scheduleDomainBorder(s);
 }
 
 template <int D, class Queue>
-Real Engine<D, Queue>::lastBorderReadAround(const CellCoords& c) const noexcept {
-    // The 3^D block around c (periodic axes wrap, walls cut it).
-    const auto& read = m_domain->borderRead;
-    Real last = -kNoEvent;
+template <class Visit>
+void Engine<D, Queue>::forEachCellAround(const CellCoords& c, Visit&& visit) const {
+    // The 3^D block around c (periodic axes wrap, walls cut it), as cell indices.
     const int reach[3] = {1, D > 1 ? 1 : 0, D > 2 ? 1 : 0};
     for (int dz = -reach[2]; dz <= reach[2]; ++dz)
         for (int dy = -reach[1]; dy <= reach[1]; ++dy)
@@ -372,9 +373,25 @@ Real Engine<D, Queue>::lastBorderReadAround(const CellCoords& c) const noexcept 
                     }
                     index += m_stride[d] * static_cast<std::uint32_t>(k);
                 }
-                if (inside) last = std::max(last, read[index]);
+                if (inside) visit(index);
             }
+}
+
+template <int D, class Queue>
+Real Engine<D, Queue>::lastReadAround(const CellCoords& c) const noexcept {
+    Real last = -kNoEvent;
+    forEachCellAround(c, [&](std::uint32_t cell) { last = std::max(last, m_domain->readTime[cell]); });
     return last;
+}
+
+template <int D, class Queue>
+bool Engine<D, Queue>::settledAround(const CellCoords& c, Real t) const noexcept {
+    bool settled = true;
+    forEachCellAround(c, [&](std::uint32_t cell) {
+        for (std::uint32_t p = m_head[cell]; p != kNone && settled; p = m_s[p].next)
+            settled = m_s[p].tst <= t;
+    });
+    return settled;
 }
 
 template <int D, class Queue>
@@ -469,20 +486,31 @@ bool Engine<D, Queue>::receive(const ParticleRecord& r) {
         std::push_heap(dom.pending.begin(), dom.pending.end(), laterRecord<PendingRecord>);
         return true;
     }
-    // Late. Harmless only for a virtual copy that no prediction has read since its time: no
-    // particle next to its old cell or its new one was predicted after it (spec 3.8 step 6;
-    // a collision with it or an annulment check is followed by such a prediction).
+    // Late (spec 3.8 steps 5-6). Harmless when nothing here has used the particle's old state
+    // since the record's time: no particle next to its old cell or its new one was predicted
+    // after it (a collision with it or an annulment check is followed by such a prediction).
     const CellRole role = dom.role[cellIndexOf(r.cell)];
     const std::uint32_t s = m_slot[r.id];
-    const bool staysVirtual =
-        (role == CellRole::Halo || role == CellRole::Foreign) && (s == kNone || !realSlot(s));
+    const bool wasReal = s != kNone && realSlot(s);
+    const bool owned = role == CellRole::Interior || role == CellRole::Border;
     CellCoords newCell{};
     for (int d = 0; d < D; ++d) newCell[d] = r.cell[d];
-    const bool unread = staysVirtual && lastBorderReadAround(newCell) < r.tst &&
-                        (s == kNone || lastBorderReadAround(m_cellOf[s]) < r.tst);
-    if (unread) {
+    const bool unread = lastReadAround(newCell) < r.tst &&
+                        (s == kNone || (m_s[s].tst <= r.tst && lastReadAround(m_cellOf[s]) < r.tst));
+    if (unread && !owned && !wasReal) {  // a virtual copy: no event here
         applyRecord(r);
         return true;
+    }
+    if (unread && owned && settledAround(newCell, r.tst)) {
+        // A particle handed over or changed here: predicted as at the record's time, from
+        // neighbours that have not moved on since (so with the serial engine's arithmetic);
+        // harmless when its next event is still ahead of this rank's clock.
+        const Real now = m_now;
+        m_now = r.tst;
+        const std::uint32_t slot = applyRecord(r);
+        if (slot != kNone) scheduleDomain(slot);
+        m_now = now;
+        if (slot != kNone && m_queue.time(slot) > now) return true;
     }
     dom.error = std::min(dom.error, r.tst);
     return false;

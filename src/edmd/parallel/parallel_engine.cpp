@@ -358,7 +358,10 @@ void ParallelEngine<D>::exchange(EventKey limit, std::vector<EventKey>* announce
         const ByteBuffer b = m_comm.receive(m_neighbours[k], tag);
         in.clear();
         unpackRecords(b, in);
-        for (const auto& r : in) m_kernel->receive(r);  // an error is remembered by the kernel
+        for (const auto& r : in) {
+            const bool late = r.tst < m_kernel->time();
+            if (m_kernel->receive(r) && late) ++m_stats.lateRecords;  // an error is remembered
+        }
     }
     if (announced) {
         // Phase 2 (spec 3.8 step 1): the received updates that are next in this rank's order
