@@ -5,7 +5,8 @@
 // Enskog collision time; reports collisions per second of wall time, the rollbacks, steps,
 // records sent, time shares, the event load of the busiest rank over the mean (imbalance) and
 // memory per rank. With one rank and --serial it runs the serial engine on the same grid (the
-// speed-up's reference). A clustering gas with and without --no-balance shows the balancing.
+// speed-up's reference): the serial default grid, or with --power-of-two the "morton" one. A clustering gas
+// with and without --no-balance shows the balancing.
 //   mpirun -np P build/bench/granulab_bench_edmd_parallel --dim 2 --particles 1000000 --fraction 0.3
 // Output: one line of key=value pairs on rank 0 (bench/README.md "Parallel EDMD").
 #include <fmt/format.h>
@@ -39,6 +40,7 @@ struct Options {
     bool serial = false;
     bool balance = true;
     bool fringe = true;
+    bool powerOfTwo = false;
 };
 
 template <int D>
@@ -50,7 +52,7 @@ int run(const Options& o, Communicator& comm) {
     auto s = unitLatticeGas<D>(count, o.fraction, 1);
     EngineConfig c;
     c.box = {L, L, L};
-    c.powerOfTwoCells = true;
+    c.powerOfTwoCells = o.powerOfTwo;  // default: the serial engine's default (free) grid
     // Time per collision per particle from the Enskog collision frequency (edmd spec 4.4).
     const Real perCollision = enskogCollisionTime(D, o.fraction, 1.0, 1.0, 1.0);
     const Real warm = o.warm * perCollision, timed = o.collisionsPerParticle * perCollision;
@@ -59,12 +61,14 @@ int run(const Options& o, Communicator& comm) {
         c.tc = 1e-4 * perCollision;  // TC model (edmd spec 4.3): no inelastic collapse
     }
     double imbalance = 1;
+    std::array<int, 3> grid{1, 1, 1};
     double wall = 0;
     std::uint64_t collisions = 0;
     std::size_t memory = 0;
     ParallelStats ps;
     if (o.serial) {
         Engine<D> e(c, s.x, s.v, s.radius, s.mass);
+        grid = e.cellsPerAxis();
         e.runUntil(warm);
         const std::uint64_t before = e.stats().collisions;
         const double t0 = wallSeconds();
@@ -77,6 +81,7 @@ int run(const Options& o, Communicator& comm) {
         pc.loadBalancing = o.balance;
         pc.fringeBorderEvents = o.fringe;
         ParallelEngine<D> e(comm, c, pc, s.x, s.v, s.radius, s.mass);
+        grid = e.cellsPerAxis();
         e.runUntil(warm);
         const std::uint64_t before = e.globals().stats.collisions;
         const std::uint64_t eventsBefore = e.localStats().events;
@@ -110,13 +115,14 @@ int run(const Options& o, Communicator& comm) {
     }
     if (comm.root())
         fmt::print(
-            "dim={} ranks={} serial={} particles={} fraction={} collisions={} wall_s={:.3f} "
+            "dim={} ranks={} serial={} cells_per_axis={} particles={} fraction={} collisions={} "
+            "wall_s={:.3f} "
             "collisions_per_s={:.4g} "
             "sections={} rollbacks={} steps={} records={} compute_s={:.3f} communication_s={:.3f} "
             "rebuild_s={:.3f} imbalance={:.3f} balance_moves={} "
             "max_memory_bytes_per_rank={} bytes_per_particle_per_rank={:.1f}\n",
-            D, comm.size(), o.serial, count, o.fraction, collisions, wall, collisions / wall, ps.sections,
-            ps.rollbacks, ps.steps, ps.recordsSent, ps.computeSeconds, ps.communicationSeconds,
+            D, comm.size(), o.serial, grid[0], count, o.fraction, collisions, wall, collisions / wall,
+            ps.sections, ps.rollbacks, ps.steps, ps.recordsSent, ps.computeSeconds, ps.communicationSeconds,
             ps.rebuildSeconds, imbalance, ps.balanceMoves, memory,
             static_cast<double>(memory) * comm.size() / static_cast<double>(count));
     return 0;
@@ -139,6 +145,7 @@ int main(int argc, char** argv) {
     cli.add_flag("--serial", o.serial, "the serial engine on the same grid (one rank)");
     cli.add_flag("!--no-balance", o.balance, "no load balancing");
     cli.add_flag("!--no-fringe", o.fringe, "collisions in fringe cells are not announced as border events");
+    cli.add_flag("--power-of-two", o.powerOfTwo, "power-of-two cells per axis (edmd.cell_grid = \"morton\")");
     CLI11_PARSE(cli, argc, argv);
     Communicator& comm = worldCommunicator();
     return o.dim == 2 ? run<2>(o, comm) : run<3>(o, comm);

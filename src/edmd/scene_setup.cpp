@@ -111,11 +111,11 @@ void configureEngine(const Context& x, Setup& s) {
     for (std::size_t k = 0; k < e.gravity.size() && k < 3; ++k) c.gravity[k] = e.gravity[k];
     c.growthRate = e.growthRate;
     c.cellSize = e.cellSize;
-    // Cell grid (edmd spec 2.4, AT-6): target C/N, and "morton" the power-of-two counts of the
-    // parallel engine (spec 3.1), so that a serial run and a run on any number of ranks execute
-    // the same events; "free" and "auto" (the default on one process; the parallel engine always
-    // takes the power-of-two grid) the count nearest the target on each axis, which the power
-    // of two can make up to 2^D times coarser at high density.
+    // Cell grid (edmd spec 2.4, AT-6): target C/N; "free" and "auto" (the default) the count
+    // nearest the target on each axis, "morton" the power of two nearest it, which can be up to
+    // 2^D times coarser at high density. The parallel engine takes the same grid (its Morton
+    // numbering spreads the padding, spec 3.1), so a run on any number of ranks executes the
+    // serial run's events on either.
     c.cellsPerParticle = e.cellsPerParticle;
     c.powerOfTwoCells = e.cellGrid == "morton";
 
@@ -251,8 +251,7 @@ void resolveCellGrid(const Context& x, Setup& s, Diagnostics& d) {
             s.warnings.push_back(
                 "edmd.cell_grid = \"morton\": a periodic axis holds fewer than 4 cells of one diameter" +
                 std::string(e.growthRate > 0 ? " at the end of the growth" : "") +
-                ", too few for a power of two; the run uses the free grid (edmd.cell_grid = \"free\"), which "
-                "the parallel engine cannot reproduce");
+                ", too few for a power of two; the run uses the free grid (edmd.cell_grid = \"free\")");
         }
     }
     if (e.cellsPerParticle > 0) {

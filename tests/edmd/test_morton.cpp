@@ -29,8 +29,17 @@ void roundTrips(const MortonGrid<D>& g) {
         }
         ASSERT_EQ(g.index(c), m);
         ASSERT_TRUE(seen.insert(c).second) << "m = " << m;
+        // Real when some cell of the axis maps to this padded coordinate (padding spread evenly).
         bool inside = true;
-        for (int d = 0; d < D; ++d) inside = inside && c[d] < g.cells()[d];
+        for (int d = 0; d < D; ++d) {
+            bool hit = false;
+            for (int k = 0; k < g.cells()[d]; ++k) {
+                std::array<int, D> cell{};
+                cell[d] = k;
+                hit = hit || g.padded(cell)[d] == c[d];
+            }
+            inside = inside && hit;
+        }
         ASSERT_EQ(g.real(m), inside) << "m = " << m;
     }
 }
@@ -181,14 +190,23 @@ TEST(Morton, BlockSideRatios) {
 }
 
 TEST(Morton, RealCellsInClosedForm) {
+    // 5 x 3 cells padded to 8 x 4: real x at padded 0, 1, 3, 4, 6; real y at 0, 1, 2.
     const MortonGrid<2> g({5, 3});
+    EXPECT_EQ(g.padded({4, 2}), (std::array<int, 2>{6, 2}));
+    EXPECT_EQ(g.padded({2, 1}), (std::array<int, 2>{3, 1}));
     EXPECT_EQ(g.realCellsIn(0, 5), 15u);
-    EXPECT_EQ(g.realCellsIn(0, 4), 12u);  // x 0-3, y 0-3
-    EXPECT_EQ(g.realCellsIn(16, 4), 3u);  // x 4-7, y 0-3
-    EXPECT_EQ(g.realCellsIn(24, 3), 1u);  // x 4-7, y 2-3
-    EXPECT_EQ(g.realCellsIn(28, 2), 0u);  // x 6-7, y 2-3
+    EXPECT_EQ(g.realCellsIn(0, 4), 9u);   // padded x 0-3, y 0-3: real x 0, 1, 3
+    EXPECT_EQ(g.realCellsIn(16, 4), 6u);  // padded x 4-7: real x 4, 6
+    EXPECT_EQ(g.realCellsIn(24, 3), 2u);  // padded x 4-7, y 2-3
+    EXPECT_EQ(g.realCellsIn(28, 2), 1u);  // padded x 6-7, y 2-3
     EXPECT_EQ(g.realCellsIn(g.index({4, 2}), 0), 1u);
+    EXPECT_EQ(g.realCellsIn(g.index({5, 2}), 0), 0u);
     EXPECT_EQ(g.realCellsIn(g.index({4, 3}), 0), 0u);
+    EXPECT_EQ(g.indexOfCell({4, 2}), g.index({6, 2}));
+    // Equal halves of a long axis hold equal numbers of real cells.
+    const MortonGrid<2> wide({1618, 1});
+    EXPECT_EQ(wide.realCellsIn(0, 10), 809u);
+    EXPECT_EQ(wide.realCellsIn(1024, 10), 809u);
     const MortonGrid<3> h({6, 6, 3});
     EXPECT_EQ(h.realCellsIn(0, h.totalBits()), 108u);
 }

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The [edmd] cell-grid keys (edmd spec 2.4, 3.1, AT-6; docs/scene-format.md "[edmd]"):
 // cells_per_particle and cell_grid parse, bad values are reported with the key and the allowed
-// range or list, "morton" gives power-of-two cells per axis (the parallel engine's grid), "free"
-// and "auto" (the default, on one process) the count nearest the target, cells_per_particle moves the grid
+// range or list, "morton" gives power-of-two cells per axis, "free" and "auto" (the default) the
+// count nearest the target, cells_per_particle moves the grid
 // both ways from the automatic C/N, a small periodic box falls back from "morton" to "free" with a warning,
 // and a target that makes 2^31 cells or more is refused.
 #include <fmt/format.h>
@@ -77,7 +77,7 @@ TEST(EdmdSceneCells, KeysParseWithTheirDefaults) {
                          "\"free\""));
     EXPECT_EQ(s.config.cellsPerParticle, 2.5);
     EXPECT_FALSE(s.config.powerOfTwoCells);
-    // "auto" on one process: the free grid (the parallel engine takes the power-of-two grid itself).
+    // "auto": the free grid (on any number of ranks: the parallel engine takes the serial grid).
     EXPECT_FALSE(resolve(gasScene(3, "count = 400\nvolume_fraction = 0.3")).config.powerOfTwoCells);
     EXPECT_TRUE(resolve(gasScene(3, "count = 400\nvolume_fraction = 0.3\ncell_grid = \"morton\""))
                     .config.powerOfTwoCells);

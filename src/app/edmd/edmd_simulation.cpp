@@ -687,23 +687,6 @@ void checkSeveralRanks(const model::SceneDef& scene, const edmd::Setup& setup) {
                     fmt::format("growing spheres run on one process only (this run has {} MPI ranks); "
                                 "allowed with several ranks: 0, or start the run without mpirun",
                                 ranks));
-    if (E.cellGrid == "free")
-        diags.error(E.loc, "edmd.cell_grid",
-                    fmt::format("\"free\" runs on one process only (this run has {} MPI ranks): the "
-                                "parallel engine's Morton blocks need power-of-two cells per axis; allowed "
-                                "with several ranks: auto, morton",
-                                ranks));
-    // The power-of-two grid must exist: 4 cells of one diameter on every periodic axis.
-    edmd::EngineConfig morton = setup.config;
-    morton.powerOfTwoCells = true;
-    try {
-        const auto n = static_cast<std::uint32_t>(setup.init.count);
-        const Real amax = std::max(E.radius, E.radiusMax);
-        setup.dim == 2 ? edmd::chooseCellGrid<2>(morton, n, amax) : edmd::chooseCellGrid<3>(morton, n, amax);
-    } catch (const std::invalid_argument& e) {
-        diags.error(E.loc, "edmd.box",
-                    fmt::format("too small for a run on several ranks: {}; run it without mpirun", e.what()));
-    }
     diags.throwIfAny();
 }
 

@@ -53,11 +53,29 @@ std::array<int, D> MortonGrid<D>::coords(std::uint64_t m) const noexcept {
     return c;
 }
 
+namespace {
+/// ceil(p n / 2^b): the first real cell at padded coordinate >= p on an axis of n cells.
+std::int64_t firstCellFrom(std::int64_t p, std::int64_t n, int b) noexcept {
+    return ((p * n) + (std::int64_t{1} << b) - 1) >> b;
+}
+}  // namespace
+
+template <int D>
+std::array<int, D> MortonGrid<D>::padded(const std::array<int, D>& cell) const noexcept {
+    std::array<int, D> p{};
+    for (int d = 0; d < D; ++d)
+        p[d] = static_cast<int>((static_cast<std::int64_t>(cell[d]) << m_bits[d]) / m_cells[d]);
+    return p;
+}
+
 template <int D>
 bool MortonGrid<D>::real(std::uint64_t m) const noexcept {
-    const std::array<int, D> c = coords(m);
-    for (int d = 0; d < D; ++d)
-        if (c[d] >= m_cells[d]) return false;
+    // Padded coordinate p holds a real cell when the first real cell at or after it sits there.
+    const std::array<int, D> p = coords(m);
+    for (int d = 0; d < D; ++d) {
+        const std::int64_t c = firstCellFrom(p[d], m_cells[d], m_bits[d]);
+        if (c >= m_cells[d] || ((c << m_bits[d]) / m_cells[d]) != p[d]) return false;
+    }
     return true;
 }
 
@@ -77,9 +95,11 @@ template <int D>
 std::uint64_t MortonGrid<D>::realCellsIn(std::uint64_t start, int log2Size) const noexcept {
     std::array<int, D> lo, hi;
     blockBox(start, log2Size, lo, hi);
+    // Real cells c with lo <= floor(c 2^b / n) < hi: ceil(hi n / 2^b) - ceil(lo n / 2^b) per axis.
     std::uint64_t n = 1;
     for (int d = 0; d < D; ++d) {
-        const int extent = std::min(hi[d], m_cells[d]) - lo[d];
+        const std::int64_t extent =
+            firstCellFrom(hi[d], m_cells[d], m_bits[d]) - firstCellFrom(lo[d], m_cells[d], m_bits[d]);
         if (extent <= 0) return 0;
         n *= static_cast<std::uint64_t>(extent);
     }

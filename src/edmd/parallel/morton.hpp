@@ -4,7 +4,9 @@
 // x least significant, so every aligned block of 2^n consecutive numbers is a box of cells
 // (side ratios 1:1 or 1:2 in 2D, 1:1:1, 1:1:2 or 1:2:2 in 3D when all axes have enough bits).
 // Grids that are not 2^k cells per axis are numbered as if padded to the next power of two per
-// axis; padded cells lie outside the box and never hold particles.
+// axis, the padding spread evenly over the axis: real cell c of n sits at padded coordinate
+// floor(c 2^b / n), so aligned blocks of equal size hold real cells within one per axis of each
+// other (a first split of a 1618-cell axis gives 809 + 809, not 1024 + 594).
 // Used at set-up and at synchronisation points, not per event.
 #pragma once
 #include <array>
@@ -30,6 +32,10 @@ public:
 
     /// Morton number of the cell with (padded) coordinates c, 0 <= c[d] < 2^bits[d]. O(totalBits).
     std::uint64_t index(const std::array<int, D>& c) const noexcept;
+    /// Padded coordinates of the real cell `cell` (0 <= cell[d] < cells[d]): floor(c 2^b / n).
+    std::array<int, D> padded(const std::array<int, D>& cell) const noexcept;
+    /// Morton number of the real cell `cell`: index(padded(cell)).
+    std::uint64_t indexOfCell(const std::array<int, D>& cell) const noexcept { return index(padded(cell)); }
     /// Inverse of index(): the (padded) coordinates of Morton number m < paddedCount(). O(totalBits).
     std::array<int, D> coords(std::uint64_t m) const noexcept;
 
@@ -41,7 +47,7 @@ public:
     std::uint64_t paddedCount() const noexcept { return std::uint64_t{1} << m_totalBits; }
     /// Real (unpadded) cells per axis.
     std::array<int, D> cells() const noexcept { return m_cells; }
-    /// True if the cell with number m < paddedCount() lies inside the real (unpadded) grid.
+    /// True if the cell with number m < paddedCount() is a real cell (not padding).
     bool real(std::uint64_t m) const noexcept;
 
     /// Real (unpadded) cells in the aligned block [start, start + 2^log2Size) (start divisible by

@@ -96,7 +96,6 @@ template <int D>
 void ParallelEngine<D>::start(const EngineGlobals& globals, std::vector<ParticleRecord> all) {
     if (m_config.growthRate != 0 || globals.growthRate != 0)
         throw std::invalid_argument("edmd::ParallelEngine: growing spheres run on the serial engine only");
-    m_config.powerOfTwoCells = true;
     m_globalCount = static_cast<std::uint32_t>(all.size());
     for (auto& r : all)
         if (r.id >= all.size())
@@ -136,7 +135,6 @@ void ParallelEngine<D>::start(const EngineGlobals& globals, std::vector<Particle
 template <int D>
 std::array<int, 3> ParallelEngine<D>::gridFor(EngineConfig config,
                                               const std::vector<ParticleRecord>& records) {
-    config.powerOfTwoCells = true;
     Real amax = 0;
     for (const auto& r : records) amax = std::max(amax, r.radius0);
     return chooseCellGrid<D>(config, static_cast<std::uint32_t>(records.size()), amax);
@@ -195,7 +193,7 @@ void ParallelEngine<D>::buildLayout() {
         const std::array<int, 3> c3 = coordsOf(static_cast<std::uint32_t>(cell));
         std::array<int, D> c;
         for (int d = 0; d < D; ++d) c[d] = c3[d];
-        m_owner[cell] = m_map->owner(m_morton->index(c));
+        m_owner[cell] = m_map->owner(m_morton->indexOfCell(c));
     }
     const int me = m_comm.rank();
     m_layout.cells = m_cells;
@@ -589,7 +587,7 @@ void ParallelEngine<D>::balance() {
         const std::array<int, 3> c3 = coordsOf(static_cast<std::uint32_t>(cell));
         std::array<int, D> c;
         for (int d = 0; d < D; ++d) c[d] = c3[d];
-        const std::uint64_t m = m_morton->index(c);
+        const std::uint64_t m = m_morton->indexOfCell(c);
         halves[m - block.start < half ? 0 : 1] += static_cast<double>(m_cellLoad[cell]);
     }
     const std::vector<double> all = m_comm.allGather(halves);

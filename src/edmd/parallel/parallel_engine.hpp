@@ -70,8 +70,8 @@ public:
     using V = VecD<D>;
 
     /// Collective. Every rank passes the same initial state at time 0 (positions [m],
-    /// velocities [m/s], radii [m], masses [kg]). The grid is the serial engine's with
-    /// powerOfTwoCells (config.powerOfTwoCells is forced on). Throws std::invalid_argument for
+    /// velocities [m/s], radii [m], masses [kg]). The grid is the serial engine's for the same
+    /// config (so both execute the same events). Throws std::invalid_argument for
     /// growing spheres (serial only) or inconsistent input.
     ParallelEngine(Communicator& comm, EngineConfig config, ParallelConfig parallel, const std::vector<V>& x,
                    const std::vector<V>& v, const std::vector<Real>& radius, const std::vector<Real>& mass);
@@ -82,7 +82,7 @@ public:
     ~ParallelEngine();
 
     /// The grid (cells per axis) a ParallelEngine takes for these records under `config`: the
-    /// serial engine's choice with power-of-two counts.
+    /// serial engine's choice.
     static std::array<int, 3> gridFor(EngineConfig config, const std::vector<ParticleRecord>& records);
 
     /// Runs every rank until all events before tEnd [s] are done; time() is then tEnd. Stops
