@@ -174,7 +174,8 @@ void Engine<D, Queue>::buildCells() {
     m_cellOf.resize(n);
     for (std::uint32_t s = 0; s < n; ++s)
         for (int d = 0; d < D; ++d)
-            m_cellOf[s][d] = cellCoordinate(m_s[s].x[d], m_invCellEdge[d], m_cells[d]);
+            m_cellOf[s][d] =
+                cellCoordinate(m_s[s].x[d], m_s[s].v[d], m_invCellEdge[d], m_cellEdge[d], m_cells[d]);
 }
 
 template <int D, class Queue>
@@ -229,7 +230,9 @@ void Engine<D, Queue>::sortParticles(bool requeue) {
     if (requeue) {
         m_queue.setTieKeys(m_id.data());
         m_queue.reset(n);
+        m_queue.beginBulk();
         for (std::uint32_t s = 0; s < n; ++s) m_queue.set(s, times[s]);
+        m_queue.retune();
     }
 }
 
@@ -237,6 +240,7 @@ template <int D, class Queue>
 void Engine<D, Queue>::rescheduleAll() noexcept {
     m_queue.setTieKeys(m_id.data());  // before reset, which already compares keys
     m_queue.reset(size());
+    m_queue.beginBulk();
     for (std::uint32_t s = 0; s < size(); ++s) schedule(s);
     m_queue.retune();
 }
@@ -927,7 +931,9 @@ void Engine<D, Queue>::loadState(std::istream& is) {
     m_id.assign(id.begin(), id.end());
     m_queue.setTieKeys(m_id.data());
     m_queue.reset(n);
+    m_queue.beginBulk();
     for (std::uint32_t s = 0; s < n; ++s) m_queue.set(s, times[s]);
+    m_queue.retune();
     resetWatchdog();
 }
 

@@ -69,6 +69,18 @@ std::array<int, 3> chooseCellGrid(const EngineConfig& config, std::uint32_t n, R
 inline std::uint16_t cellCoordinate(Real x, Real invEdge, int cells) noexcept {
     return static_cast<std::uint16_t>(std::clamp(static_cast<int>(std::floor(x * invEdge)), 0, cells - 1));
 }
+/// The same for a particle of velocity v [m/s] on a grid of edge L / cells [m]: one on a cell
+/// face (as the face crossings see it, edmd Eq. 2.22-2.25: lo = k edge) and moving across it
+/// belongs to the cell it enters anyway. Otherwise it would cross at dt = 0: a lattice whose
+/// sites fall on cell faces would start with a quarter of its events at one instant.
+inline std::uint16_t cellCoordinate(Real x, Real v, Real invEdge, Real edge, int cells) noexcept {
+    int k = std::clamp(static_cast<int>(std::floor(x * invEdge)), 0, cells - 1);
+    if (v < 0 && k > 0 && x <= k * edge)
+        --k;
+    else if (v > 0 && k + 1 < cells && x >= (k + 1) * edge)
+        ++k;
+    return static_cast<std::uint16_t>(k);
+}
 
 /// Position of an event in the global order: time, then the particle's global id (edmd spec
 /// 3.8 [I]: ties broken by id, so that serial and parallel runs execute the same order).

@@ -120,6 +120,7 @@ Engine<D, Queue>::Engine(EngineConfig config, const DomainLayout& layout, const 
     }
     m_queue.setTieKeys(m_id.data());
     m_queue.reset(n);
+    m_queue.beginBulk();  // until retune() below
     // Scheduled events as recorded (partners by id); kind 4 is predicted now, in slot order.
     std::vector<std::uint32_t> predict;
     for (std::uint32_t s = 0; s < n; ++s) {

@@ -117,6 +117,19 @@ std::uint32_t CalendarQueue::binOf(Real t) const noexcept {
 }
 
 void CalendarQueue::link(std::uint32_t i, std::uint32_t bin) noexcept {
+    if (bin == m_sortedBin && m_head[bin] != kNone &&
+        !m_tie.earlier(m_node[i].time, i, m_node[m_head[bin]].time, m_head[bin])) {
+        // Keep the sorted bin sorted: after the last entry that comes before i.
+        std::uint32_t after = m_head[bin];
+        while (m_node[after].next != kNone &&
+               m_tie.earlier(m_node[m_node[after].next].time, m_node[after].next, m_node[i].time, i))
+            after = m_node[after].next;
+        m_node[i].prev = after;
+        m_node[i].next = m_node[after].next;
+        if (m_node[after].next != kNone) m_node[m_node[after].next].prev = i;
+        m_node[after].next = i;
+        return;
+    }
     m_node[i].prev = kHeadOf | bin;  // the head of a list keeps its bin in the back link
     m_node[i].next = m_head[bin];
     if (m_head[bin] != kNone) m_node[m_head[bin]].prev = i;
@@ -137,11 +150,13 @@ void CalendarQueue::reset(std::uint32_t n) {
     m_bins = std::clamp<std::uint32_t>(n, 1, kHeadOf - 1);  // bin numbers must fit beside the tag
     m_head.assign(m_bins + 1, kNone);
     m_current = 0;
+    m_sortedBin = kNone;
     m_start = 0;
     m_width = m_invWidth = 1;
     m_rebuilds = 0;
     for (std::uint32_t i = n; i-- > 0;) link(i, m_bins);  // all in the overflow
     m_top = 0;
+    m_bulk = false;
     if (n) settle();
 }
 
@@ -164,6 +179,7 @@ void CalendarQueue::rebuild() noexcept {
     if (!(m_width > 0) || !(tmin + m_width > tmin)) m_width = std::max<Real>(1, std::abs(tmin)) * 1e-12;
     m_invWidth = 1 / m_width;
     m_current = 0;
+    m_sortedBin = kNone;
     std::uint32_t i = m_head[m_bins];
     m_head[m_bins] = kNone;
     while (i != kNone) {
@@ -174,6 +190,7 @@ void CalendarQueue::rebuild() noexcept {
 }
 
 void CalendarQueue::retune() noexcept {
+    m_bulk = false;
     if (m_node.empty()) return;
     rebuildAll();
     settle();
@@ -190,6 +207,7 @@ void CalendarQueue::rebuildAll() noexcept {
         }
     }
     m_current = m_bins;
+    m_sortedBin = kNone;
     m_setsSinceRebuild = 0;
 }
 
@@ -203,6 +221,11 @@ void CalendarQueue::settle() noexcept {
         if (m_current >= m_bins) break;
     }
     const std::uint32_t bin = m_current < m_bins ? m_current : m_bins;
+    if (bin == m_sortedBin) {  // a long bin, kept sorted: its head is the earliest
+        m_top = m_head[bin];
+        m_topBin = bin;
+        return;
+    }
     std::uint32_t best = m_head[bin];
     std::uint32_t scanned = 0;
     for (std::uint32_t i = m_node[best].next; i != kNone; i = m_node[i].next) {
@@ -215,13 +238,42 @@ void CalendarQueue::settle() noexcept {
     if (scanned > kLongBin && bin < m_bins && m_setsSinceRebuild > m_bins) {
         rebuildAll();  // re-tune the width from all pending times, then find the top again
         settle();
+    } else if (scanned > kLongBin && bin < m_bins) {
+        // A bin no width splits (a clump of events within round-off of one instant, such as
+        // the first cell crossings of a lattice whose sites fall on cell faces): sorted once,
+        // its head is the top until the window moves on (else every event rescans it).
+        sortBin(bin);
+        m_top = m_head[bin];
     }
+}
+
+void CalendarQueue::sortBin(std::uint32_t bin) {
+    m_scratch.clear();
+    for (std::uint32_t i = m_head[bin]; i != kNone; i = m_node[i].next) m_scratch.push_back(i);
+    std::sort(m_scratch.begin(), m_scratch.end(), [this](std::uint32_t a, std::uint32_t b) {
+        return m_tie.earlier(m_node[a].time, a, m_node[b].time, b);
+    });
+    std::uint32_t prev = kHeadOf | bin;
+    for (const std::uint32_t i : m_scratch) {
+        m_node[i].prev = prev;
+        if (prev & kHeadOf)
+            m_head[bin] = i;
+        else
+            m_node[prev].next = i;
+        prev = i;
+    }
+    m_node[prev].next = kNone;
+    m_sortedBin = bin;
 }
 
 void CalendarQueue::set(std::uint32_t i, Real t) noexcept {
     ++m_setsSinceRebuild;
     unlink(i);
     m_node[i].time = t;
+    if (m_bulk) {  // bulk loading: everything waits in the overflow for retune()
+        link(i, m_bins);
+        return;
+    }
     link(i, binOf(t));
     // The earliest event changes only if i was it or i now beats it.
     if (i == m_top || m_tie.earlier(t, i, m_node[m_top].time, m_top) || m_topBin != m_current) settle();

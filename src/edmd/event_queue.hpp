@@ -79,6 +79,7 @@ public:
     /// n particles, every time +infinity.
     void reset(std::uint32_t n);
     /// After many set() calls in a row (a whole schedule built): nothing to re-tune here.
+    void beginBulk() noexcept {}
     void retune() noexcept {}
     /// Adds particles up to n (new ones at +infinity), keeping the others' times. O(added).
     void grow(std::uint32_t n);
@@ -113,6 +114,7 @@ class TournamentTree {
 public:
     void reset(std::uint32_t n);
     /// After many set() calls in a row (a whole schedule built): nothing to re-tune here.
+    void beginBulk() noexcept {}
     void retune() noexcept {}
     void grow(std::uint32_t n);
     void setTieKeys(const std::uint32_t* key) noexcept { m_tie.key = key; }
@@ -142,9 +144,13 @@ private:
 class CalendarQueue {
 public:
     void reset(std::uint32_t n);
-    /// After many set() calls in a row (a whole schedule built): the bin width from all pending
-    /// times. Without it the first window is cut from the first event alone (1 s wide), and a
-    /// queue that is rebuilt often (the parallel kernel after a rollback) scans long bins.
+    /// Bulk loading (a whole schedule about to be set): set() only records times, and top() is
+    /// undefined until retune(). Without it a window cut from the first times set would pile
+    /// every earlier one into the current bin and scan it on every set (quadratic: minutes at
+    /// N = 10^6 when many first events fall in one instant).
+    void beginBulk() noexcept { m_bulk = true; }
+    /// Ends bulk loading: the bin width from all pending times, then the earliest event. Also
+    /// re-tunes a queue in use.
     void retune() noexcept;
     void grow(std::uint32_t n);
     void setTieKeys(const std::uint32_t* key) noexcept { m_tie.key = key; }
@@ -171,6 +177,9 @@ private:
     /// Moves every event to the overflow and rebuilds: re-tunes the bin width when the current
     /// bin has grown long (the first window was made from too few or unrepresentative times).
     void rebuildAll() noexcept;
+    /// Sorts the list of `bin` by (time, key) and keeps it sorted (m_sortedBin) until the
+    /// window moves on.
+    void sortBin(std::uint32_t bin);
 
     /// Per particle, one 16-byte record (a quarter cache line): an update reads and writes the
     /// time and both links of a particle with one miss at large N.
@@ -189,6 +198,9 @@ private:
     Real m_invWidth = 1;
     std::uint64_t m_rebuilds = 0;
     std::uint64_t m_setsSinceRebuild = 0;  ///< amortisation guard of rebuildAll
+    bool m_bulk = false;                   ///< between beginBulk() and retune()
+    std::uint32_t m_sortedBin = kNone;     ///< the current bin when it is kept sorted
+    std::vector<std::uint32_t> m_scratch;  ///< sortBin's list
 };
 
 }  // namespace granulab::edmd

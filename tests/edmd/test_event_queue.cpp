@@ -100,3 +100,48 @@ TEST(EventQueue, CalendarQueueHandlesOnlyInfiniteAndFarFutureEvents) {
     EXPECT_EQ(q.top(), 0u);
     EXPECT_GE(q.rebuilds(), 1u);
 }
+
+// A clump of events within round-off of one instant (the first cell crossings of a lattice whose
+// sites fall on cell faces) beside ordinary ones, loaded in bulk as the engine does: no bin width
+// splits the clump, so the queue keeps that bin sorted. Every top must still be the reference's,
+// also while events are set into the clump, before it, after it and to +infinity.
+TEST(EventQueue, CalendarQueueKeepsAClumpOfNearlyEqualTimesInOrder) {
+    const std::uint32_t n = 4000;
+    const Real inf = std::numeric_limits<Real>::infinity();
+    edmd::CalendarQueue q;
+    q.reset(n);
+    q.beginBulk();
+    std::set<std::pair<Real, std::uint32_t>> ref;
+    std::vector<Real> time(n);
+    CounterRng rng(3, 0);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        time[i] = i % 3 == 0 ? 1e-15 * std::floor(rng.uniform() * 8) : 0.1 + rng.uniform();
+        q.set(i, time[i]);
+        ref.insert({time[i], i});
+    }
+    q.retune();
+    ASSERT_EQ(q.top(), ref.begin()->second);
+    for (int op = 0; op < 20000; ++op) {
+        const std::uint32_t i = q.top();
+        const Real now = q.topTime();
+        const Real u = rng.uniform();
+        // Mostly later (as a popped event is), sometimes back into the clump or to +infinity.
+        const Real t = u < 0.1 ? now + 1e-15 * std::floor(rng.uniform() * 4)
+                               : (u < 0.12 ? inf : now + 0.5 * rng.uniform());
+        ref.erase({time[i], i});
+        time[i] = t;
+        ref.insert({t, i});
+        q.set(i, t);
+        // An arbitrary particle moved earlier into the clump's instant now and then.
+        if (u > 0.97) {
+            const auto j = static_cast<std::uint32_t>(rng.uniform() * n);
+            const Real tj = ref.begin()->first < inf ? ref.begin()->first : now;
+            ref.erase({time[j], j});
+            time[j] = tj;
+            ref.insert({tj, j});
+            q.set(j, tj);
+        }
+        ASSERT_EQ(q.top(), ref.begin()->second) << "operation " << op;
+        ASSERT_EQ(q.topTime(), ref.begin()->first) << "operation " << op;
+    }
+}

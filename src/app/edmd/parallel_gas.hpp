@@ -94,7 +94,7 @@ public:
         if (root()) writeGasCheckpoint(out, D, state);
     }
     /// Every rank reads the checkpoint (written on any number of ranks). A checkpoint of a run
-    /// on another cell grid (a serial run on the free grid) continues on this engine's grid:
+    /// on another cell grid (another edmd.cell_grid) continues on this engine's grid:
     /// every particle flown to the checkpoint's time and predicted afresh there (the same
     /// physics; not the same bits as a continuation on the old grid, whose cell crossings round
     /// positions elsewhere).

@@ -112,7 +112,8 @@ void ParallelEngine<D>::start(const EngineGlobals& globals, std::vector<Particle
     for (auto& r : all)
         if (r.eventKind == 4 && r.tst == globals.now)
             for (int d = 0; d < D; ++d)
-                r.cell[d] = cellCoordinate(r.x[d], m_cells[d] / m_config.box[d], m_cells[d]);
+                r.cell[d] = cellCoordinate(r.x[d], r.v[d], m_cells[d] / m_config.box[d],
+                                           m_config.box[d] / m_cells[d], m_cells[d]);
     m_barrier = globals.now;
     buildLayout();
     distribute(std::move(all), true, globals);
