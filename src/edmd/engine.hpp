@@ -82,6 +82,31 @@ inline std::uint16_t cellCoordinate(Real x, Real v, Real invEdge, Real edge, int
     return static_cast<std::uint16_t>(k);
 }
 
+/// Calls visit(cell index, x fastest) for every cell of the 3^D block around the cell with
+/// coordinates c[0..D) on a grid of cells[d] per axis: periodic axes wrap, walls cut the block.
+template <int D, class Coords, class Visit>
+void forEachCellAround(const Coords& c, const std::array<int, 3>& cells, const std::array<bool, 3>& periodic,
+                       Visit&& visit) {
+    const int reach[3] = {1, D > 1 ? 1 : 0, D > 2 ? 1 : 0};
+    for (int dz = -reach[2]; dz <= reach[2]; ++dz)
+        for (int dy = -reach[1]; dy <= reach[1]; ++dy)
+            for (int dx = -reach[0]; dx <= reach[0]; ++dx) {
+                const int delta[3] = {dx, dy, dz};
+                std::uint32_t index = 0, stride = 1;
+                bool inside = true;
+                for (int d = 0; d < D && inside; ++d) {
+                    int k = static_cast<int>(c[d]) + delta[d];
+                    if (k < 0 || k >= cells[d]) {
+                        inside = periodic[d];
+                        k = (k + cells[d]) % cells[d];
+                    }
+                    index += stride * static_cast<std::uint32_t>(k);
+                    stride *= static_cast<std::uint32_t>(cells[d]);
+                }
+                if (inside) visit(index);
+            }
+}
+
 /// Position of an event in the global order: time, then the particle's global id (edmd spec
 /// 3.8 [I]: ties broken by id, so that serial and parallel runs execute the same order).
 /// A received record of a particle comes before that particle's own event of the same instant
@@ -354,9 +379,6 @@ private:
     template <bool Gravity>
     void predictFaces(const Subject& p, const CellCoords& c, Prediction& next) const noexcept;
     Neighbourhood neighbourhood(const CellCoords& c) const noexcept;
-    /// Domain mode: visit(cell index) for the 3^D cells around c (periodic axes wrap).
-    template <class Visit>
-    void forEachCellAround(const CellCoords& c, Visit&& visit) const;
     /// Domain mode: [s] the last prediction of a border or fringe particle around c.
     Real lastReadAround(const CellCoords& c) const noexcept;
     /// Domain mode: no particle in the 3^D cells around c has a state later than t [s].

@@ -356,39 +356,17 @@ void Engine<D, Queue>::scheduleDomain(std::uint32_t s) noexcept {
 }
 
 template <int D, class Queue>
-template <class Visit>
-void Engine<D, Queue>::forEachCellAround(const CellCoords& c, Visit&& visit) const {
-    // The 3^D block around c (periodic axes wrap, walls cut it), as cell indices.
-    const int reach[3] = {1, D > 1 ? 1 : 0, D > 2 ? 1 : 0};
-    for (int dz = -reach[2]; dz <= reach[2]; ++dz)
-        for (int dy = -reach[1]; dy <= reach[1]; ++dy)
-            for (int dx = -reach[0]; dx <= reach[0]; ++dx) {
-                const int delta[3] = {dx, dy, dz};
-                std::uint32_t index = 0;
-                bool inside = true;
-                for (int d = 0; d < D && inside; ++d) {
-                    int k = c[d] + delta[d];
-                    if (k < 0 || k >= m_cells[d]) {
-                        inside = m_config.periodic[d];
-                        k = (k + m_cells[d]) % m_cells[d];
-                    }
-                    index += m_stride[d] * static_cast<std::uint32_t>(k);
-                }
-                if (inside) visit(index);
-            }
-}
-
-template <int D, class Queue>
 Real Engine<D, Queue>::lastReadAround(const CellCoords& c) const noexcept {
     Real last = -kNoEvent;
-    forEachCellAround(c, [&](std::uint32_t cell) { last = std::max(last, m_domain->readTime[cell]); });
+    forEachCellAround<D>(c, m_cells, m_config.periodic,
+                         [&](std::uint32_t cell) { last = std::max(last, m_domain->readTime[cell]); });
     return last;
 }
 
 template <int D, class Queue>
 bool Engine<D, Queue>::settledAround(const CellCoords& c, Real t) const noexcept {
     bool settled = true;
-    forEachCellAround(c, [&](std::uint32_t cell) {
+    forEachCellAround<D>(c, m_cells, m_config.periodic, [&](std::uint32_t cell) {
         for (std::uint32_t p = m_head[cell]; p != kNone && settled; p = m_s[p].next)
             settled = m_s[p].tst <= t;
     });

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstring>
 #include <stdexcept>
+#include <utility>
 
 #include "core/interrupt.hpp"
 #include "core/timer.hpp"
@@ -154,25 +155,7 @@ std::array<int, 3> ParallelEngine<D>::coordsOf(std::uint32_t cell) const noexcep
 template <int D>
 template <class Visit>
 void ParallelEngine<D>::forEachCellAround(std::uint32_t cell, Visit&& visit) const {
-    const std::array<int, 3> c = coordsOf(cell);
-    const int reach[3] = {1, 1, D == 3 ? 1 : 0};
-    for (int dz = -reach[2]; dz <= reach[2]; ++dz)
-        for (int dy = -reach[1]; dy <= reach[1]; ++dy)
-            for (int dx = -reach[0]; dx <= reach[0]; ++dx) {
-                const int delta[3] = {dx, dy, dz};
-                std::uint32_t index = 0, stride = 1;
-                bool inside = true;
-                for (int d = 0; d < D && inside; ++d) {
-                    int k = c[d] + delta[d];
-                    if (k < 0 || k >= m_cells[d]) {
-                        inside = m_config.periodic[d];
-                        k = (k + m_cells[d]) % m_cells[d];
-                    }
-                    index += stride * static_cast<std::uint32_t>(k);
-                    stride *= static_cast<std::uint32_t>(m_cells[d]);
-                }
-                if (inside) visit(index);
-            }
+    edmd::forEachCellAround<D>(coordsOf(cell), m_cells, m_config.periodic, std::forward<Visit>(visit));
 }
 
 template <int D>
