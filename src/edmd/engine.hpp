@@ -74,7 +74,7 @@ inline std::uint16_t cellCoordinate(Real x, Real invEdge, int cells) noexcept {
 /// belongs to the cell it enters anyway. Otherwise it would cross at dt = 0: a lattice whose
 /// sites fall on cell faces would start with a quarter of its events at one instant.
 inline std::uint16_t cellCoordinate(Real x, Real v, Real invEdge, Real edge, int cells) noexcept {
-    int k = std::clamp(static_cast<int>(std::floor(x * invEdge)), 0, cells - 1);
+    int k = cellCoordinate(x, invEdge, cells);
     if (v < 0 && k > 0 && x <= k * edge)
         --k;
     else if (v > 0 && k + 1 < cells && x >= (k + 1) * edge)
@@ -156,6 +156,10 @@ struct EngineGlobals {
 /// border: next to another rank's cell), halo cells (another rank's cells next to an owned
 /// one, holding virtual copies of its particles) and foreign cells (none of these).
 enum class CellRole : std::uint8_t { Foreign = 0, Interior = 1, Border = 2, Halo = 3 };
+/// A cell this rank owns (its particles are real here).
+inline bool ownedRole(CellRole r) noexcept {
+    return r == CellRole::Interior || r == CellRole::Border;
+}
 struct DomainLayout {
     std::array<int, 3> cells{1, 1, 1};  ///< cells per axis of the global grid
     std::vector<CellRole> role;         ///< per cell index (x fastest); empty: every cell owned
@@ -379,6 +383,12 @@ private:
     template <bool Gravity>
     void predictFaces(const Subject& p, const CellCoords& c, Prediction& next) const noexcept;
     Neighbourhood neighbourhood(const CellCoords& c) const noexcept;
+    /// The key of the earliest scheduled event (+infinity when there is none).
+    EventKey topEventKey() const noexcept {
+        return size() > 0 ? EventKey{m_queue.topTime(), m_id[m_queue.top()], 1} : EventKey{};
+    }
+    /// Domain mode: the key of the earliest received update (+infinity when there is none).
+    EventKey pendingKey() const noexcept;
     /// Domain mode: [s] the last prediction of a border or fringe particle around c.
     Real lastReadAround(const CellCoords& c) const noexcept;
     /// Domain mode: no particle in the 3^D cells around c has a state later than t [s].

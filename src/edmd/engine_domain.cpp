@@ -312,7 +312,7 @@ bool Engine<D, Queue>::realSlot(std::uint32_t s) const noexcept {
     if (!m_domain) return true;
     if (m_domain->dead[s]) return false;
     const CellRole r = roleOf(s);
-    return r == CellRole::Interior || r == CellRole::Border;
+    return ownedRole(r);
 }
 
 template <int D, class Queue>
@@ -389,14 +389,15 @@ void Engine<D, Queue>::drainChanges(std::vector<Change>& out) {
 }
 
 template <int D, class Queue>
+EventKey Engine<D, Queue>::pendingKey() const noexcept {
+    if (m_domain->pending.empty()) return EventKey{};
+    const ParticleRecord& r = m_domain->pending.front().record;
+    return EventKey{r.tst, r.id};
+}
+
+template <int D, class Queue>
 EventKey Engine<D, Queue>::nextKey() const noexcept {
-    EventKey k;
-    if (size() > 0) k = {m_queue.topTime(), m_id[m_queue.top()], 1};
-    if (m_domain && !m_domain->pending.empty()) {
-        const ParticleRecord& r = m_domain->pending.front().record;
-        k = std::min(k, EventKey{r.tst, r.id});
-    }
-    return k;
+    return m_domain ? std::min(topEventKey(), pendingKey()) : topEventKey();
 }
 
 template <int D, class Queue>
@@ -410,8 +411,7 @@ EventKey Engine<D, Queue>::nextBorderKey() const noexcept {
     for (const PendingRecord& p : m_domain->pending) {
         const ParticleRecord& r = p.record;
         const CellRole role = m_domain->role[cellIndexOf(r.cell)];
-        if ((role == CellRole::Interior || role == CellRole::Border) && EventKey{r.tst, r.id} < k)
-            k = EventKey{r.tst, r.id};
+        if (ownedRole(role) && EventKey{r.tst, r.id} < k) k = EventKey{r.tst, r.id};
     }
     return k;
 }
@@ -471,7 +471,7 @@ bool Engine<D, Queue>::receive(const ParticleRecord& r) {
     const CellRole role = dom.role[cellIndexOf(r.cell)];
     const std::uint32_t s = m_slot[r.id];
     const bool wasReal = s != kNone && realSlot(s);
-    const bool owned = role == CellRole::Interior || role == CellRole::Border;
+    const bool owned = ownedRole(role);
     CellCoords newCell{};
     for (int d = 0; d < D; ++d) newCell[d] = r.cell[d];
     const bool unread = lastReadAround(newCell) < r.tst &&
@@ -588,9 +588,8 @@ template <int D, class Queue>
 void Engine<D, Queue>::applyPendingInOrder(EventKey limit) {
     DomainData& dom = *m_domain;
     while (!dom.pending.empty()) {
-        const EventKey up{dom.pending.front().record.tst, dom.pending.front().record.id};
-        const EventKey ev = size() > 0 ? EventKey{m_queue.topTime(), m_id[m_queue.top()], 1} : EventKey{};
-        if (!(up < ev) || !(up < limit)) break;
+        const EventKey up = pendingKey();
+        if (!(up < topEventKey()) || !(up < limit)) break;
         applyPending();
     }
 }
@@ -603,9 +602,9 @@ std::uint64_t Engine<D, Queue>::runDomain(EventKey limit, EventKey stopAfterBord
     for (;;) {
         if (stopNow) break;  // the announced border event was the last of this step (spec 3.8)
         const std::uint32_t i = size() > 0 ? m_queue.top() : 0;
-        const EventKey ev = size() > 0 ? EventKey{m_queue.topTime(), m_id[i], 1} : EventKey{};
+        const EventKey ev = topEventKey();
         if (!dom.pending.empty()) {
-            const EventKey up{dom.pending.front().record.tst, dom.pending.front().record.id};
+            const EventKey up = pendingKey();
             if (up < ev) {
                 if (!(up < limit)) break;
                 applyPending();
