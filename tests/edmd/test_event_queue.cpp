@@ -15,12 +15,22 @@
 using namespace granulab;
 
 namespace {
+/// The queue under test and its reference (a sorted set of (time, index)), kept in step.
+using Reference = std::set<std::pair<Real, std::uint32_t>>;
+template <class Queue>
+void setBoth(Queue& q, Reference& ref, std::vector<Real>& time, std::uint32_t i, Real t) {
+    ref.erase({time[i], i});
+    time[i] = t;
+    ref.insert({t, i});
+    q.set(i, t);
+}
+
 template <class Queue>
 void agreesWithSortedReference(std::uint32_t n, std::uint64_t seed, int operations) {
     Queue q;
     q.reset(n);
     const Real inf = std::numeric_limits<Real>::infinity();
-    std::set<std::pair<Real, std::uint32_t>> ref;
+    Reference ref;
     std::vector<Real> time(n, inf);
     for (std::uint32_t i = 0; i < n; ++i) ref.insert({inf, i});
     CounterRng rng(seed, 0);
@@ -43,10 +53,7 @@ void agreesWithSortedReference(std::uint32_t n, std::uint64_t seed, int operatio
             i = static_cast<std::uint32_t>(rng.uniform() * n);
             t = inf;
         }
-        ref.erase({time[i], i});
-        time[i] = t;
-        ref.insert({t, i});
-        q.set(i, t);
+        setBoth(q, ref, time, i, t);
         ASSERT_EQ(q.top(), ref.begin()->second) << "operation " << op;
         ASSERT_EQ(q.topTime(), ref.begin()->first) << "operation " << op;
         ASSERT_EQ(q.time(i), t);
@@ -111,7 +118,7 @@ TEST(EventQueue, CalendarQueueKeepsAClumpOfNearlyEqualTimesInOrder) {
     edmd::CalendarQueue q;
     q.reset(n);
     q.beginBulk();
-    std::set<std::pair<Real, std::uint32_t>> ref;
+    Reference ref;
     std::vector<Real> time(n);
     CounterRng rng(3, 0);
     for (std::uint32_t i = 0; i < n; ++i) {
@@ -128,18 +135,12 @@ TEST(EventQueue, CalendarQueueKeepsAClumpOfNearlyEqualTimesInOrder) {
         // Mostly later (as a popped event is), sometimes back into the clump or to +infinity.
         const Real t = u < 0.1 ? now + 1e-15 * std::floor(rng.uniform() * 4)
                                : (u < 0.12 ? inf : now + 0.5 * rng.uniform());
-        ref.erase({time[i], i});
-        time[i] = t;
-        ref.insert({t, i});
-        q.set(i, t);
+        setBoth(q, ref, time, i, t);
         // An arbitrary particle moved earlier into the clump's instant now and then.
         if (u > 0.97) {
             const auto j = static_cast<std::uint32_t>(rng.uniform() * n);
             const Real tj = ref.begin()->first < inf ? ref.begin()->first : now;
-            ref.erase({time[j], j});
-            time[j] = tj;
-            ref.insert({tj, j});
-            q.set(j, tj);
+            setBoth(q, ref, time, j, tj);
         }
         ASSERT_EQ(q.top(), ref.begin()->second) << "operation " << op;
         ASSERT_EQ(q.topTime(), ref.begin()->first) << "operation " << op;
