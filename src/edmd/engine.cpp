@@ -156,12 +156,18 @@ void Engine<D, Queue>::buildCells() {
         const Real L = m_config.box[d];
         const int cells = grid[d];
         m_cells[d] = cells;
-        m_stride[d] = static_cast<std::uint32_t>(cellCount);
         m_cellEdge[d] = L / cells;
         m_invCellEdge[d] = cells / L;
         cellCount *= static_cast<std::size_t>(cells);
     }
     if (cellCount >= kNone) throw std::invalid_argument("edmd::Engine: too many cells; raise edmd.cell_size");
+    // Tables for the window's cells only (a domain engine's own cells and halo, spec 3.6).
+    if (!m_windowGiven) m_window = CellWindow::whole(m_cells);
+    std::size_t windowStride = 1;
+    for (int d = 0; d < D; ++d) {
+        m_stride[d] = static_cast<std::uint32_t>(windowStride);
+        windowStride *= static_cast<std::size_t>(m_window.extent[d]);
+    }
     // Growing spheres outgrow the cells when 2 a_max(t) exceeds the smallest edge.
     m_regridTime = kNoEvent;
     if (m_config.growthRate > 0) {
@@ -169,7 +175,7 @@ void Engine<D, Queue>::buildCells() {
         for (int d = 0; d < D; ++d) minEdge = std::min(minEdge, m_cellEdge[d]);
         m_regridTime = (0.5 * minEdge - m_maxRadius0) / m_config.growthRate;
     }
-    m_head.assign(cellCount, kNone);
+    m_head.assign(m_window.count(), kNone);
     m_head.shrink_to_fit();
     m_cellOf.resize(n);
     for (std::uint32_t s = 0; s < n; ++s)
@@ -257,8 +263,22 @@ void Engine<D, Queue>::regrid() {
 template <int D, class Queue>
 std::uint32_t Engine<D, Queue>::cellIndex(const CellCoords& c) const noexcept {
     std::uint32_t k = 0;
-    for (int d = 0; d < D; ++d) k += m_stride[d] * c[d];
+    for (int d = 0; d < D; ++d) {
+        const int l = m_window.local(d, c[d]);
+        GL_ASSERT(l >= 0, "edmd::Engine: cell outside the window");
+        k += m_stride[d] * static_cast<std::uint32_t>(l);
+    }
     GL_ASSERT(k < m_head.size(), "edmd::Engine: cell index out of range");
+    return k;
+}
+
+template <int D, class Queue>
+std::uint32_t Engine<D, Queue>::gridIndex(const CellCoords& c) const noexcept {
+    std::uint32_t k = 0, stride = 1;
+    for (int d = 0; d < D; ++d) {
+        k += stride * c[d];
+        stride *= static_cast<std::uint32_t>(m_cells[d]);
+    }
     return k;
 }
 
@@ -421,26 +441,28 @@ template <bool Gravity>
 template <int D, class Queue>
 [[gnu::always_inline]] inline typename Engine<D, Queue>::Neighbourhood Engine<D, Queue>::neighbourhood(
     const CellCoords& c) const noexcept {
+    // Window coordinates: a cell at the window's edge has its neighbours inside only when the
+    // window is the whole (periodic) axis, and only a domain engine's halo cells (never
+    // predicted) sit at the edge of a partial window.
     Neighbourhood nb;
     for (int d = 0; d < D; ++d) {
         const int cd = c[d];
         GL_ASSERT(cd < m_cells[d], "edmd::Engine: cell coordinate out of range");
+        const int l = m_window.local(d, cd), extent = m_window.extent[d];
+        const bool lower = cd > 0 || m_config.periodic[d],
+                   upper = cd + 1 < m_cells[d] || m_config.periodic[d];
+        GL_ASSERT(l >= 0 && (extent == m_cells[d] || ((l > 0 || !lower) && (l + 1 < extent || !upper))),
+                  "edmd::Engine: predicting a particle at the edge of the window");
         int k = 0;
-        if (cd > 0) {
-            nb.offset[d][k] = m_stride[d] * static_cast<std::uint32_t>(cd - 1);
-            nb.shift[d][k++] = 0;
-        } else if (m_config.periodic[d]) {
-            nb.offset[d][k] = m_stride[d] * static_cast<std::uint32_t>(m_cells[d] - 1);
-            nb.shift[d][k++] = -m_config.box[d];
+        if (lower) {
+            nb.offset[d][k] = m_stride[d] * static_cast<std::uint32_t>(l > 0 ? l - 1 : extent - 1);
+            nb.shift[d][k++] = cd > 0 ? 0 : -m_config.box[d];
         }
-        nb.offset[d][k] = m_stride[d] * static_cast<std::uint32_t>(cd);
+        nb.offset[d][k] = m_stride[d] * static_cast<std::uint32_t>(l);
         nb.shift[d][k++] = 0;
-        if (cd + 1 < m_cells[d]) {
-            nb.offset[d][k] = m_stride[d] * static_cast<std::uint32_t>(cd + 1);
-            nb.shift[d][k++] = 0;
-        } else if (m_config.periodic[d]) {
-            nb.offset[d][k] = 0;
-            nb.shift[d][k++] = m_config.box[d];
+        if (upper) {
+            nb.offset[d][k] = m_stride[d] * static_cast<std::uint32_t>(l + 1 < extent ? l + 1 : 0);
+            nb.shift[d][k++] = cd + 1 < m_cells[d] ? 0 : m_config.box[d];
         }
         nb.count[d] = k;
     }
@@ -824,7 +846,7 @@ std::size_t Engine<D, Queue>::memoryBytes() const noexcept {
            m_cellOf.capacity() * sizeof(CellCoords) +
            (m_slot.capacity() + m_id.capacity() + m_head.capacity()) * 4 +
            (m_radius.capacity() + m_mass.capacity() + m_lastCollision.capacity()) * sizeof(Real) +
-           m_omega.capacity() * sizeof(Vec3) + m_queue.memoryBytes();
+           m_omega.capacity() * sizeof(Vec3) + m_queue.memoryBytes() + domainMemoryBytes();
 }
 
 template <int D, class Queue>
@@ -887,6 +909,8 @@ void Engine<D, Queue>::loadState(std::istream& is) {
     readVector(is, m_lastCollision);
     readVector(is, m_head);
     m_cells = readPod<std::array<int, 3>>(is);
+    m_window = CellWindow::whole(m_cells);  // checkpoints are serial
+    m_windowGiven = false;
     m_stride = readPod<std::array<std::uint32_t, 3>>(is);
     m_cellEdge = readPod<std::array<Real, 3>>(is);
     m_invCellEdge = readPod<std::array<Real, 3>>(is);

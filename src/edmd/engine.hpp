@@ -16,7 +16,9 @@
 #include <memory>
 #include <vector>
 
+#include "edmd/cell_window.hpp"
 #include "edmd/event_queue.hpp"
+#include "edmd/id_slot_map.hpp"
 #include "edmd/kinematics.hpp"
 #include "edmd/restitution.hpp"
 
@@ -82,31 +84,6 @@ inline std::uint16_t cellCoordinate(Real x, Real v, Real invEdge, Real edge, int
     return static_cast<std::uint16_t>(k);
 }
 
-/// Calls visit(cell index, x fastest) for every cell of the 3^D block around the cell with
-/// coordinates c[0..D) on a grid of cells[d] per axis: periodic axes wrap, walls cut the block.
-template <int D, class Coords, class Visit>
-void forEachCellAround(const Coords& c, const std::array<int, 3>& cells, const std::array<bool, 3>& periodic,
-                       Visit&& visit) {
-    const int reach[3] = {1, D > 1 ? 1 : 0, D > 2 ? 1 : 0};
-    for (int dz = -reach[2]; dz <= reach[2]; ++dz)
-        for (int dy = -reach[1]; dy <= reach[1]; ++dy)
-            for (int dx = -reach[0]; dx <= reach[0]; ++dx) {
-                const int delta[3] = {dx, dy, dz};
-                std::uint32_t index = 0, stride = 1;
-                bool inside = true;
-                for (int d = 0; d < D && inside; ++d) {
-                    int k = static_cast<int>(c[d]) + delta[d];
-                    if (k < 0 || k >= cells[d]) {
-                        inside = periodic[d];
-                        k = (k + cells[d]) % cells[d];
-                    }
-                    index += stride * static_cast<std::uint32_t>(k);
-                    stride *= static_cast<std::uint32_t>(cells[d]);
-                }
-                if (inside) visit(index);
-            }
-}
-
 /// Position of an event in the global order: time, then the particle's global id (edmd spec
 /// 3.8 [I]: ties broken by id, so that serial and parallel runs execute the same order).
 /// A received record of a particle comes before that particle's own event of the same instant
@@ -162,12 +139,24 @@ inline bool ownedRole(CellRole r) noexcept {
 }
 struct DomainLayout {
     std::array<int, 3> cells{1, 1, 1};  ///< cells per axis of the global grid
-    std::vector<CellRole> role;         ///< per cell index (x fastest); empty: every cell owned
-    /// Per cell index: 1 for an interior cell with a border cell among its 3^D neighbours. A
+    std::vector<CellRole> role;         ///< per window index (domain only)
+    /// Per window index: 1 for an interior cell with a border cell among its 3^D neighbours. A
     /// collision of a particle there can reach a border cell (its partner stays within those
     /// 3^D cells until the collision), so it is announced as a border event.
     std::vector<std::uint8_t> fringe;
     std::uint32_t globalParticles = 0;  ///< N: ids are 0 .. N-1
+    /// The cells this rank keeps tables for (its own and its halo; domain only). Cells
+    /// outside it are foreign.
+    CellWindow window;
+    /// One rank's part of a parallel run; false: a serial engine (every cell owned; role,
+    /// fringe and window ignored).
+    bool domain = false;
+    /// A serial engine's layout: the grid only.
+    static DomainLayout serial(const std::array<int, 3>& cells) {
+        DomainLayout layout;
+        layout.cells = cells;
+        return layout;
+    }
 };
 
 /// Why the last run() stopped short of its end (issue 11's progress watchdog).
@@ -256,7 +245,7 @@ public:
     // ---- records and the domain mode (edmd spec 3; edmd/parallel/parallel_engine.hpp) ----
 
     /// An engine from records (their scheduled events kept, kind 4 predicted now) on the grid of
-    /// `layout`. With layout.role empty every cell is owned (a serial engine, e.g. resumed from
+    /// `layout`. Without layout.domain every cell is owned (a serial engine, e.g. resumed from
     /// a rank-count-independent checkpoint); else a domain engine: particles in halo cells are
     /// virtual copies (no events of their own, spec 3.6).
     Engine(EngineConfig config, const DomainLayout& layout, const EngineGlobals& globals,
@@ -268,8 +257,9 @@ public:
     /// Every particle's record (owned ones only if realOnly), sorted by id; events as scheduled.
     std::vector<ParticleRecord> records(bool realOnly) const;
     EngineGlobals globals() const;
-    /// Cell index of cell coordinates (x fastest), as in DomainLayout::role.
-    std::uint32_t cellIndexOf(const std::array<std::uint16_t, 3>& c) const noexcept;
+    /// The cells this engine keeps tables for (serial: the whole grid; domain mode: the
+    /// layout's window). takeCellEvents and DomainLayout::role use its indices.
+    const CellWindow& window() const noexcept { return m_window; }
     /// The next event or received update, and the next one that can touch another rank's
     /// particles (a border event, spec 3.6, or a pending update): what a step announces.
     EventKey nextKey() const noexcept;
@@ -295,20 +285,26 @@ public:
     /// neighbourhood; causalityError() is then the earliest such time.
     bool receive(const ParticleRecord& record);
     Real causalityError() const noexcept;
-    /// A changed particle that other ranks may see: its record and its cell before the changes
-    /// of this step (both cells decide who receives it).
+    /// A changed particle that other ranks may see: its record and its cell before and after
+    /// the change, as grid indices (x fastest over the whole grid; both cells decide who
+    /// receives it).
     struct Change {
         ParticleRecord record;
         std::uint32_t oldCell = 0, newCell = 0;
     };
+    /// Domain mode: frees the slots of particles that left this rank's cells and halo when they
+    /// are an eighth of all (at least 256); slots are never reused in between, so a long run
+    /// would otherwise grow with every particle that ever passed through the halo. Physically a
+    /// no-op (every order is by id); the parallel engine calls it at barriers.
+    void reclaimDeadSlots();
     /// Moves the changes since the last call to `out` (cleared first), in the order made.
     void drainChanges(std::vector<Change>& out);
     /// Particles this engine owns (domain mode: those in its own cells; else all).
     std::uint32_t ownedCount() const noexcept;
     /// Sets the clock to t >= time() (all events up to t done): the end of a parallel section.
     void setTime(Real t) noexcept { m_now = std::max(m_now, t); }
-    /// Adds the events executed per owned cell since the last call to `perCell` (sized to the
-    /// cell count) and restarts the count: the load measure of the balancing (spec 3.2).
+    /// Adds the events executed per owned cell since the last call to `perCell` (by window
+    /// index, sized to the window) and restarts the count: the load measure of the balancing (spec 3.2).
     void takeCellEvents(std::vector<std::uint64_t>& perCell);
     /// Starts counting events per cell (off by default: a write per event that only the load
     /// balancing needs).
@@ -421,7 +417,10 @@ private:
     /// id map; rebuilds the queue if `requeue`. Physically a no-op (only slots change).
     void sortParticles(bool requeue);
     void regrid();
+    /// Window index of a cell that lies in the window (the per-cell tables' index).
     std::uint32_t cellIndex(const CellCoords& c) const noexcept;
+    /// Grid index of a cell (x fastest over the whole grid).
+    std::uint32_t gridIndex(const CellCoords& c) const noexcept;
     void linkCell(std::uint32_t s) noexcept;
     void unlinkCell(std::uint32_t s) noexcept;
     V minimumImage(V d) const noexcept;
@@ -439,13 +438,27 @@ private:
 
     // ---- domain mode (engine_domain.cpp)
     bool realSlot(std::uint32_t s) const noexcept;
+    /// Bytes of the domain data (0 for a serial engine).
+    std::size_t domainMemoryBytes() const noexcept;
+    /// Slot of a particle id, kNone if not held here.
+    std::uint32_t slotOfId(std::uint32_t id) const noexcept {
+        return m_domain ? m_domain->slots.find(id) : m_slot[id];
+    }
     CellRole roleOf(std::uint32_t s) const noexcept;
-    void noteChange(std::uint32_t s, std::uint32_t oldCell);
+    /// Role of the cell with grid coordinates c[0..D) (Foreign outside the window).
+    template <class Coords>
+    CellRole roleOfCell(const Coords& c) const noexcept {
+        const std::uint32_t w = m_window.indexOf<D>(c);
+        return w == CellWindow::kOutside ? CellRole::Foreign : m_domain->role[w];
+    }
+    void noteChange(std::uint32_t s, const CellCoords& oldCell);
     void scheduleDomain(std::uint32_t s) noexcept;
     void scheduleDomainBorder(std::uint32_t s) noexcept;
     void applyPending();
     std::uint32_t applyRecord(const ParticleRecord& r);
     std::uint32_t addSlot(std::uint32_t id);
+    /// Reserves room for n slots in every per-slot array.
+    void reserveSlots(std::size_t n);
     void killSlot(std::uint32_t s) noexcept;
     ParticleRecord recordOf(std::uint32_t s) const;
     void setFromRecord(std::uint32_t s, const ParticleRecord& r);
@@ -454,7 +467,7 @@ private:
     BigVector<State> m_s;
     BigVector<Event> m_event;
     BigVector<CellCoords> m_cellOf;  ///< cell of each slot
-    /// Slot of each particle id (domain mode: of every global id; kNone if not held here).
+    /// Slot of each particle id (serial; a domain engine keeps DomainData::slots instead).
     BigVector<std::uint32_t> m_slot;
     BigVector<std::uint32_t> m_id;  ///< global particle id of each slot (the queues' tie keys)
     std::vector<Real> m_radius;     ///< [m] radius at time 0 per slot; empty if all equal (m_uniformRadius)
@@ -462,11 +475,13 @@ private:
     Real m_uniformRadius = 0, m_uniformMass = 1;
     std::vector<Vec3> m_omega;                  ///< [rad/s] per slot, rough spheres only
     std::vector<Real> m_lastCollision;          ///< [s] per slot: time of the last collision (TC model only)
-    BigVector<std::uint32_t> m_head;            ///< first slot of each cell
+    BigVector<std::uint32_t> m_head;            ///< first slot of each window cell
     Queue m_queue;                              ///< keyed by slot
-    std::array<int, 3> m_cells{1, 1, 1};        ///< cells per axis
+    std::array<int, 3> m_cells{1, 1, 1};        ///< cells per axis of the whole grid
+    CellWindow m_window;                        ///< the cells with tables here (serial: all)
+    bool m_windowGiven = false;                 ///< m_window comes from a DomainLayout
     std::array<int, 3> m_forcedCells{0, 0, 0};  ///< cells per axis given by a DomainLayout (0: chosen)
-    std::array<std::uint32_t, 3> m_stride{1, 1, 1};  ///< cell index stride per axis
+    std::array<std::uint32_t, 3> m_stride{1, 1, 1};  ///< window index stride per axis
     std::array<Real, 3> m_cellEdge{1, 1, 1};         ///< [m]
     std::array<Real, 3> m_invCellEdge{1, 1, 1};
     Real m_regridTime = kNoEvent;  ///< [s] growing spheres outgrow the cells at this time
@@ -499,15 +514,19 @@ private:
         std::uint64_t arrival = 0;
     };
     struct DomainData {
-        std::vector<CellRole> role;             ///< per cell index
-        std::vector<std::uint8_t> fringe;       ///< per cell index (DomainLayout::fringe)
-        std::vector<std::uint32_t> cellEvents;  ///< per cell index: events since takeCellEvents (if counted)
-        AddressableHeap border;                 ///< per slot: the time of its event if a border event
-        std::vector<std::uint8_t> dead;         ///< per slot: left this rank's cells (slot not reused)
+        IdSlotMap slots;                    ///< slot of each particle held here (own and halo)
+        std::uint32_t globalParticles = 0;  ///< N: ids are 0 .. N-1
+        std::vector<CellRole> role;         ///< per window index
+        std::vector<std::uint8_t> fringe;   ///< per window index (DomainLayout::fringe)
+        std::vector<std::uint32_t>
+            cellEvents;                  ///< per window index: events since takeCellEvents (if counted)
+        AddressableHeap border;          ///< per slot: the time of its event if a border event
+        std::vector<std::uint8_t> dead;  ///< per slot: left this rank's cells (slot not reused)
+        std::uint32_t deadCount = 0;     ///< slots marked dead
         std::vector<Change> changes;
         std::vector<PendingRecord> pending;  ///< received updates, a min-heap by (tst, id, arrival)
         std::uint64_t arrivals = 0;          ///< records received so far (the arrival order)
-        /// Per cell index: [s] the last time a particle in this border or fringe cell was
+        /// Per window index: [s] the last time a particle in this border or fringe cell was
         /// predicted (a prediction reads the particles in the 3^D cells around it).
         std::vector<Real> readTime;
         Real error = kNoEvent;                          ///< [s] earliest causality error

@@ -43,10 +43,15 @@ Engine<D, Queue>::Engine(EngineConfig config, const DomainLayout& layout, const 
         m_forcedCells[d] = layout.cells[d];
         cellCount *= static_cast<std::size_t>(layout.cells[d]);
     }
-    if (!layout.role.empty() && layout.role.size() != cellCount)
-        throw std::invalid_argument("edmd::Engine: the domain layout's roles do not match its grid");
+    if (layout.domain) {  // a domain engine: tables for its window only
+        if (layout.window.cells != layout.cells || layout.role.size() != layout.window.count() ||
+            (!layout.fringe.empty() && layout.fringe.size() != layout.role.size()))
+            throw std::invalid_argument("edmd::Engine: the domain layout's roles do not match its window");
+        m_window = layout.window;
+        m_windowGiven = true;
+    }
     const auto n = static_cast<std::uint32_t>(records.size());
-    const std::uint32_t idCount = layout.role.empty() ? n : layout.globalParticles;
+    const std::uint32_t idCount = !layout.domain ? n : layout.globalParticles;
     m_config.restitution = globals.restitution;
     m_config.wallRestitution = globals.wallRestitution;
     m_config.tc = globals.tc;
@@ -86,30 +91,37 @@ Engine<D, Queue>::Engine(EngineConfig config, const DomainLayout& layout, const 
     m_event.assign(n, Event{});
     m_cellOf.resize(n);
     m_id.resize(n);
-    m_slot.assign(idCount, kNone);
+    IdSlotMap slots;  // a domain engine's id map: its own and halo particles only
+    if (!layout.domain) m_slot.assign(idCount, kNone);
     for (std::uint32_t s = 0; s < n; ++s) {
         const ParticleRecord& r = records[s];
-        if (r.id >= idCount || m_slot[r.id] != kNone)
+        if (r.id >= idCount || (layout.domain ? slots.find(r.id) : m_slot[r.id]) != kNone)
             throw std::invalid_argument("edmd::Engine: particle record with an id out of range or twice");
         for (int d = 0; d < D; ++d)
-            if (r.cell[d] >= layout.cells[d])
-                throw std::invalid_argument("edmd::Engine: particle record in a cell outside the grid");
+            if (r.cell[d] >= layout.cells[d] || (m_windowGiven && m_window.local(d, r.cell[d]) < 0))
+                throw std::invalid_argument(
+                    "edmd::Engine: particle record in a cell outside the grid or window");
         if (!(r.radius0 > 0) || !(r.mass > 0) || !std::isfinite(r.tst))
             throw std::invalid_argument("edmd::Engine: particle record with a bad radius, mass or time");
         m_id[s] = r.id;
-        m_slot[r.id] = s;
+        if (layout.domain)
+            slots.set(r.id, s);
+        else
+            m_slot[r.id] = s;
         setFromRecord(s, r);
         m_maxRadius0 = std::max(m_maxRadius0, r.radius0);
     }
     buildCells();  // the layout's grid; every slot's cell then comes from its record
     // A serial engine chooses its grid again when growing spheres outgrow it (as it would have).
-    if (layout.role.empty()) m_forcedCells = {0, 0, 0};
+    if (!layout.domain) m_forcedCells = {0, 0, 0};
     for (std::uint32_t s = 0; s < n; ++s)
         for (int d = 0; d < D; ++d) m_cellOf[s][d] = records[s].cell[d];
     for (std::uint32_t s = n; s-- > 0;) linkCell(s);  // ascending slot order in every cell list
     m_nextSort = m_stats.events + kSortEvery * std::max<std::uint64_t>(n, 1);
-    if (!layout.role.empty()) {
+    if (layout.domain) {
         m_domain = std::make_unique<DomainData>();
+        m_domain->slots = std::move(slots);
+        m_domain->globalParticles = idCount;
         m_domain->role = layout.role;
         m_domain->fringe = layout.fringe;
         m_domain->fringe.resize(layout.role.size(), 0);
@@ -117,6 +129,8 @@ Engine<D, Queue>::Engine(EngineConfig config, const DomainLayout& layout, const 
         m_domain->border.setTieKeys(m_id.data());
         m_domain->border.reset(n);
         m_domain->dead.assign(n, 0);
+        // Room for the halo's comings and goings between two reclaimDeadSlots().
+        reserveSlots(n + n / 8 + 1024);
     }
     m_queue.setTieKeys(m_id.data());
     m_queue.reset(n);
@@ -136,7 +150,7 @@ Engine<D, Queue>::Engine(EngineConfig config, const DomainLayout& layout, const 
             case kKindParticle:
                 // A partner this rank does not hold cannot be met before the event (it would be
                 // in a neighbour cell); the event then only re-predicts at its time.
-                ev.partner = r.eventPartner < idCount ? m_slot[r.eventPartner] : kNone;
+                ev.partner = r.eventPartner < idCount ? slotOfId(r.eventPartner) : kNone;
                 ev.partnerCounter = r.eventPartnerCounter;
                 break;
             case kKindCell:
@@ -185,6 +199,8 @@ Engine<D, Queue>& Engine<D, Queue>::operator=(const Engine& o) {
     m_head = o.m_head;
     m_queue = o.m_queue;
     m_cells = o.m_cells;
+    m_window = o.m_window;
+    m_windowGiven = o.m_windowGiven;
     m_forcedCells = o.m_forcedCells;
     m_stride = o.m_stride;
     m_cellEdge = o.m_cellEdge;
@@ -211,6 +227,16 @@ Engine<D, Queue>& Engine<D, Queue>::operator=(const Engine& o) {
     m_queue.setTieKeys(m_id.data());
     if (m_domain) m_domain->border.setTieKeys(m_id.data());
     return *this;
+}
+
+template <int D, class Queue>
+std::size_t Engine<D, Queue>::domainMemoryBytes() const noexcept {
+    if (!m_domain) return 0;
+    const DomainData& dom = *m_domain;
+    return dom.slots.memoryBytes() + dom.role.capacity() + dom.fringe.capacity() +
+           dom.cellEvents.capacity() * sizeof(std::uint32_t) + dom.readTime.capacity() * sizeof(Real) +
+           dom.dead.capacity() + dom.border.memoryBytes() + dom.pending.capacity() * sizeof(PendingRecord) +
+           dom.changes.capacity() * sizeof(Change);
 }
 
 template <int D, class Queue>
@@ -296,13 +322,6 @@ EngineGlobals Engine<D, Queue>::globals() const {
 }
 
 template <int D, class Queue>
-std::uint32_t Engine<D, Queue>::cellIndexOf(const std::array<std::uint16_t, 3>& c) const noexcept {
-    std::uint32_t k = 0;
-    for (int d = 0; d < D; ++d) k += m_stride[d] * c[d];
-    return k;
-}
-
-template <int D, class Queue>
 CellRole Engine<D, Queue>::roleOf(std::uint32_t s) const noexcept {
     return m_domain ? m_domain->role[cellIndex(m_cellOf[s])] : CellRole::Interior;
 }
@@ -339,7 +358,7 @@ void Engine<D, Queue>::scheduleDomainBorder(std::uint32_t s) noexcept {
         if (k == m_cells[d]) k = 0;
         if (k < 0) k = m_cells[d] - 1;
         c[d] = static_cast<std::uint16_t>(k);
-        border = dom.role[cellIndex(c)] != CellRole::Interior;
+        border = roleOfCell(c) != CellRole::Interior;
     }
     dom.border.set(s, border ? m_queue.time(s) : kNoEvent);
 }
@@ -358,15 +377,15 @@ void Engine<D, Queue>::scheduleDomain(std::uint32_t s) noexcept {
 template <int D, class Queue>
 Real Engine<D, Queue>::lastReadAround(const CellCoords& c) const noexcept {
     Real last = -kNoEvent;
-    forEachCellAround<D>(c, m_cells, m_config.periodic,
-                         [&](std::uint32_t cell) { last = std::max(last, m_domain->readTime[cell]); });
+    m_window.forEachAround<D>(c, m_config.periodic,
+                              [&](std::uint32_t cell) { last = std::max(last, m_domain->readTime[cell]); });
     return last;
 }
 
 template <int D, class Queue>
 bool Engine<D, Queue>::settledAround(const CellCoords& c, Real t) const noexcept {
     bool settled = true;
-    forEachCellAround<D>(c, m_cells, m_config.periodic, [&](std::uint32_t cell) {
+    m_window.forEachAround<D>(c, m_config.periodic, [&](std::uint32_t cell) {
         for (std::uint32_t p = m_head[cell]; p != kNone && settled; p = m_s[p].next)
             settled = m_s[p].tst <= t;
     });
@@ -374,12 +393,10 @@ bool Engine<D, Queue>::settledAround(const CellCoords& c, Real t) const noexcept
 }
 
 template <int D, class Queue>
-void Engine<D, Queue>::noteChange(std::uint32_t s, std::uint32_t oldCell) {
-    const std::uint32_t newCell = cellIndex(m_cellOf[s]);
-    const auto& role = m_domain->role;
-    if (role[oldCell] == CellRole::Interior && role[newCell] == CellRole::Interior) return;
+void Engine<D, Queue>::noteChange(std::uint32_t s, const CellCoords& oldCell) {
+    if (roleOfCell(oldCell) == CellRole::Interior && roleOf(s) == CellRole::Interior) return;
     // Every change is sent, not only the last of a step: a neighbour applies each at its time.
-    m_domain->changes.push_back({recordOf(s), oldCell, newCell});
+    m_domain->changes.push_back({recordOf(s), gridIndex(oldCell), gridIndex(m_cellOf[s])});
 }
 
 template <int D, class Queue>
@@ -410,7 +427,7 @@ EventKey Engine<D, Queue>::nextBorderKey() const noexcept {
     // create no event here (events naming an old copy are annulled at their own, later time).
     for (const PendingRecord& p : m_domain->pending) {
         const ParticleRecord& r = p.record;
-        const CellRole role = m_domain->role[cellIndexOf(r.cell)];
+        const CellRole role = roleOfCell(r.cell);
         if (ownedRole(role) && EventKey{r.tst, r.id} < k) k = EventKey{r.tst, r.id};
     }
     return k;
@@ -453,7 +470,7 @@ bool Engine<D, Queue>::receive(const ParticleRecord& r) {
     for (int d = 0; d < D; ++d)
         if (r.cell[d] >= m_cells[d])
             throw std::runtime_error("edmd: received a particle record outside the grid");
-    if (r.id >= m_slot.size())
+    if (r.id >= dom.globalParticles)
         throw std::runtime_error("edmd: received a particle record with an unknown id");
     if (m_stats.events >= dom.injectAt) {  // test hook: this record is declared late
         dom.injectAt = ~std::uint64_t{0};
@@ -468,8 +485,8 @@ bool Engine<D, Queue>::receive(const ParticleRecord& r) {
     // Late (spec 3.8 steps 5-6). Harmless when nothing here has used the particle's old state
     // since the record's time: no particle next to its old cell or its new one was predicted
     // after it (a collision with it or an annulment check is followed by such a prediction).
-    const CellRole role = dom.role[cellIndexOf(r.cell)];
-    const std::uint32_t s = m_slot[r.id];
+    const CellRole role = roleOfCell(r.cell);
+    const std::uint32_t s = dom.slots.find(r.id);
     const bool wasReal = s != kNone && realSlot(s);
     const bool owned = ownedRole(role);
     CellCoords newCell{};
@@ -508,7 +525,7 @@ std::uint32_t Engine<D, Queue>::addSlot(std::uint32_t id) {
     if (!m_omega.empty()) m_omega.emplace_back();
     if (!m_lastCollision.empty()) m_lastCollision.push_back(-kNoEvent);
     m_domain->dead.push_back(0);
-    m_slot[id] = s;
+    m_domain->slots.set(id, s);
     m_queue.setTieKeys(m_id.data());  // m_id may have moved; grow already compares keys
     m_domain->border.setTieKeys(m_id.data());
     m_queue.grow(s + 1);
@@ -520,17 +537,88 @@ template <int D, class Queue>
 void Engine<D, Queue>::killSlot(std::uint32_t s) noexcept {
     unlinkCell(s);
     m_domain->dead[s] = 1;
+    ++m_domain->deadCount;
     ++m_s[s].counter;  // events that name this slot are annulled (spec 2.6)
-    m_slot[m_id[s]] = kNone;
+    m_domain->slots.erase(m_id[s]);
     m_queue.set(s, kNoEvent);
     m_domain->border.set(s, kNoEvent);
 }
 
 template <int D, class Queue>
+void Engine<D, Queue>::reserveSlots(std::size_t n) {
+    m_s.reserve(n);
+    m_event.reserve(n);
+    m_cellOf.reserve(n);
+    m_id.reserve(n);
+    if (!m_radius.empty()) m_radius.reserve(n);
+    if (!m_mass.empty()) m_mass.reserve(n);
+    if (!m_omega.empty()) m_omega.reserve(n);
+    if (!m_lastCollision.empty()) m_lastCollision.reserve(n);
+    if (m_domain) m_domain->dead.reserve(n);
+}
+
+template <int D, class Queue>
+void Engine<D, Queue>::reclaimDeadSlots() {
+    if (!m_domain) return;
+    DomainData& dom = *m_domain;
+    const std::uint32_t n = size();
+    if (dom.deadCount < 256 || 8 * std::uint64_t{dom.deadCount} < n) return;
+    // Live slots move down in order (newSlot[s] <= s: in place, ascending). Slot numbers change
+    // nothing physical: every order between particles is by id.
+    std::vector<std::uint32_t> newSlot(n, kNone);
+    std::uint32_t live = 0;
+    for (std::uint32_t s = 0; s < n; ++s)
+        if (!dom.dead[s]) newSlot[s] = live++;
+    std::vector<Real> times(live), borderTimes(live);
+    for (std::uint32_t s = 0; s < n; ++s) {
+        const std::uint32_t t = newSlot[s];
+        if (t == kNone) continue;
+        times[t] = m_queue.time(s);
+        borderTimes[t] = dom.border.time(s);
+        m_s[t] = m_s[s];
+        m_event[t] = m_event[s];
+        m_cellOf[t] = m_cellOf[s];
+        m_id[t] = m_id[s];
+        if (!m_radius.empty()) m_radius[t] = m_radius[s];
+        if (!m_mass.empty()) m_mass[t] = m_mass[s];
+        if (!m_omega.empty()) m_omega[t] = m_omega[s];
+        if (!m_lastCollision.empty()) m_lastCollision[t] = m_lastCollision[s];
+    }
+    m_s.resize(live);
+    m_event.resize(live);
+    m_cellOf.resize(live);
+    m_id.resize(live);
+    if (!m_radius.empty()) m_radius.resize(live);
+    if (!m_mass.empty()) m_mass.resize(live);
+    if (!m_omega.empty()) m_omega.resize(live);
+    if (!m_lastCollision.empty()) m_lastCollision.resize(live);
+    dom.dead.assign(live, 0);
+    dom.deadCount = 0;
+    // Slot references: an event naming a dead slot (annulled at its time, since killSlot raised
+    // that slot's counter) names no partner now, which annuls it the same way (runDomain).
+    for (auto& ev : m_event)
+        if (ev.partner < kMaxParticles) ev.partner = newSlot[ev.partner];
+    for (auto& p : m_s)
+        if (p.next != kNone) p.next = newSlot[p.next];  // cell lists hold live slots only
+    for (auto& h : m_head)
+        if (h != kNone) h = newSlot[h];
+    dom.slots = IdSlotMap{};
+    for (std::uint32_t t = 0; t < live; ++t) dom.slots.set(m_id[t], t);
+    m_queue.setTieKeys(m_id.data());
+    m_queue.reset(live);
+    m_queue.beginBulk();
+    for (std::uint32_t t = 0; t < live; ++t) m_queue.set(t, times[t]);
+    m_queue.retune();
+    dom.border.setTieKeys(m_id.data());
+    dom.border.reset(live);
+    for (std::uint32_t t = 0; t < live; ++t) dom.border.set(t, borderTimes[t]);
+}
+
+template <int D, class Queue>
 std::uint32_t Engine<D, Queue>::applyRecord(const ParticleRecord& r) {
     DomainData& dom = *m_domain;
-    const CellRole role = dom.role[cellIndexOf(r.cell)];
-    std::uint32_t s = m_slot[r.id];
+    const CellRole role = roleOfCell(r.cell);
+    std::uint32_t s = dom.slots.find(r.id);
     if (role == CellRole::Foreign) {  // left this rank's cells and halo
         if (s != kNone) {
             if (realSlot(s)) --dom.owned;
@@ -627,9 +715,9 @@ std::uint64_t Engine<D, Queue>::runDomain(EventKey limit, EventKey stopAfterBord
         ++done;
         ++m_stats.events;
         const Event e = m_event[i];
-        const std::uint32_t oldCell = cellIndex(m_cellOf[i]);
+        const CellCoords oldCell = m_cellOf[i];
         stopNow = dom.border.time(i) == t && !(ev < stopAfterBorderFrom);
-        if (!dom.cellEvents.empty()) ++dom.cellEvents[oldCell];  // the balancing's load
+        if (!dom.cellEvents.empty()) ++dom.cellEvents[cellIndex(oldCell)];  // the balancing's load
         if (e.partner < kMaxParticles) {
             const std::uint32_t j = e.partner;
             if (m_s[j].counter != e.partnerCounter) {  // annulled (spec 2.6)
@@ -639,7 +727,7 @@ std::uint64_t Engine<D, Queue>::runDomain(EventKey limit, EventKey stopAfterBord
                 scheduleDomain(i);
                 continue;
             }
-            const std::uint32_t oldCellJ = cellIndex(m_cellOf[j]);
+            const CellCoords oldCellJ = m_cellOf[j];
             collide(i, j, t);  // a virtual partner too: its owner gets the record (spec 3.8 step 5)
             if (dom.collisionLog) dom.collisionLog->push_back(ev);
             noteChange(i, oldCell);
@@ -674,28 +762,29 @@ std::uint64_t Engine<D, Queue>::runDomain(EventKey limit, EventKey stopAfterBord
     return done;
 }
 
-#define GRANULAB_EDMD_DOMAIN_MEMBERS(D, Q)                                                                \
-    template Engine<D, Q>::Engine(EngineConfig, const DomainLayout&, const EngineGlobals&,                \
-                                  std::vector<ParticleRecord>);                                           \
-    template std::vector<ParticleRecord> Engine<D, Q>::records(bool) const;                               \
-    template Engine<D, Q>::Engine(const Engine&);                                                         \
-    template Engine<D, Q>& Engine<D, Q>::operator=(const Engine&);                                        \
-    template EngineGlobals Engine<D, Q>::globals() const;                                                 \
-    template std::uint32_t Engine<D, Q>::cellIndexOf(const std::array<std::uint16_t, 3>&) const noexcept; \
-    template EventKey Engine<D, Q>::nextKey() const noexcept;                                             \
-    template EventKey Engine<D, Q>::nextBorderKey() const noexcept;                                       \
-    template std::uint64_t Engine<D, Q>::runDomain(EventKey, EventKey);                                   \
-    template bool Engine<D, Q>::receive(const ParticleRecord&);                                           \
-    template Real Engine<D, Q>::causalityError() const noexcept;                                          \
-    template void Engine<D, Q>::drainChanges(std::vector<Change>&);                                       \
-    template std::uint32_t Engine<D, Q>::ownedCount() const noexcept;                                     \
-    template void Engine<D, Q>::injectCausalityError(std::uint64_t) noexcept;                             \
-    template void Engine<D, Q>::setCollisionLog(std::vector<EventKey>*) noexcept;                         \
-    template void Engine<D, Q>::applyReceivedUntil(Real);                                                 \
-    template void Engine<D, Q>::applyPendingInOrder(EventKey);                                            \
-    template void Engine<D, Q>::takeCellEvents(std::vector<std::uint64_t>&);                              \
-    template void Engine<D, Q>::countCellEvents();                                                        \
-    template bool Engine<D, Q>::realSlot(std::uint32_t) const noexcept;
+#define GRANULAB_EDMD_DOMAIN_MEMBERS(D, Q)                                                 \
+    template Engine<D, Q>::Engine(EngineConfig, const DomainLayout&, const EngineGlobals&, \
+                                  std::vector<ParticleRecord>);                            \
+    template std::vector<ParticleRecord> Engine<D, Q>::records(bool) const;                \
+    template Engine<D, Q>::Engine(const Engine&);                                          \
+    template Engine<D, Q>& Engine<D, Q>::operator=(const Engine&);                         \
+    template EngineGlobals Engine<D, Q>::globals() const;                                  \
+    template EventKey Engine<D, Q>::nextKey() const noexcept;                              \
+    template EventKey Engine<D, Q>::nextBorderKey() const noexcept;                        \
+    template std::uint64_t Engine<D, Q>::runDomain(EventKey, EventKey);                    \
+    template bool Engine<D, Q>::receive(const ParticleRecord&);                            \
+    template Real Engine<D, Q>::causalityError() const noexcept;                           \
+    template void Engine<D, Q>::drainChanges(std::vector<Change>&);                        \
+    template std::uint32_t Engine<D, Q>::ownedCount() const noexcept;                      \
+    template void Engine<D, Q>::injectCausalityError(std::uint64_t) noexcept;              \
+    template void Engine<D, Q>::setCollisionLog(std::vector<EventKey>*) noexcept;          \
+    template void Engine<D, Q>::applyReceivedUntil(Real);                                  \
+    template void Engine<D, Q>::applyPendingInOrder(EventKey);                             \
+    template void Engine<D, Q>::takeCellEvents(std::vector<std::uint64_t>&);               \
+    template void Engine<D, Q>::countCellEvents();                                         \
+    template bool Engine<D, Q>::realSlot(std::uint32_t) const noexcept;                    \
+    template std::size_t Engine<D, Q>::domainMemoryBytes() const noexcept;                 \
+    template void Engine<D, Q>::reclaimDeadSlots();
 
 GRANULAB_EDMD_DOMAIN_MEMBERS(2, AddressableHeap)
 GRANULAB_EDMD_DOMAIN_MEMBERS(2, TournamentTree)

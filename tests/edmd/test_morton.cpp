@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Morton numbering of the cell grid (edmd spec section 3.1, AT-5): the 8 x 8 table of Fig. 3.1,
 // coords() as the inverse of index(), every aligned block of 2^n numbers is a box (also for
-// unequal bits per axis, 3D and padded grids), and realCellsIn() against a brute-force count.
+// unequal bits per axis, 3D and padded grids), and realCellsIn() and realBox() against a
+// brute-force count.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -70,6 +71,32 @@ void blocksAreBoxes(const MortonGrid<D>& g) {
             }
             // size distinct cells (round trip) inside a box of volume size: the block is the box.
             ASSERT_EQ(g.realCellsIn(start, k), realCount) << "block " << start << " (2^" << k << ")";
+            // realBox(): the real cells whose padded coordinates lie in the block's box.
+            std::array<int, D> rlo, rhi;
+            g.realBox(start, k, rlo, rhi);
+            std::uint64_t inBox = 0;
+            std::array<int, D> c{};
+            const auto count = [&](auto&& self, int d) -> void {
+                if (d < 0) {
+                    ++inBox;
+                    return;
+                }
+                for (c[d] = 0; c[d] < g.cells()[d]; ++c[d]) {
+                    const std::array<int, D> p = g.padded(c);
+                    bool inside = true;
+                    for (int e = 0; e < D; ++e) inside = inside && p[e] >= lo[e] && p[e] < hi[e];
+                    bool inReal = true;
+                    for (int e = 0; e < D; ++e) inReal = inReal && c[e] >= rlo[e] && c[e] < rhi[e];
+                    if (d == 0) {
+                        ASSERT_EQ(inside, inReal) << "block " << start << " (2^" << k << ")";
+                        if (inside) self(self, -1);
+                    } else {
+                        self(self, d - 1);
+                    }
+                }
+            };
+            count(count, D - 1);
+            ASSERT_EQ(inBox, realCount) << "block " << start << " (2^" << k << ")";
         }
     }
 }

@@ -192,7 +192,7 @@ TEST(ParallelEdmd, ResumeOnAnotherRankCountAndOnTheSerialEngine) {
     resumed.runUntil(4.0);
     const auto again = resumed.gatherNow();
     EngineConfig serialConfig = s.config;
-    Engine<2> serial(serialConfig, DomainLayout{first.cellsPerAxis(), {}, {}, 0}, g, state);
+    Engine<2> serial(serialConfig, DomainLayout::serial(first.cellsPerAxis()), g, state);
     serial.runUntil(4.0);
     if (comm.root()) {
         ASSERT_EQ(again.size(), uninterrupted.size());

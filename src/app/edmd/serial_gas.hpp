@@ -76,7 +76,7 @@ public:
     /// Continues event for event from a checkpoint written on any number of ranks.
     void loadState(std::istream& in, const edmd::EngineConfig& config) {
         GasCheckpoint state = readGasCheckpoint(in, D);
-        m_engine = std::make_unique<EngineType>(config, edmd::DomainLayout{state.cells, {}, {}, 0},
+        m_engine = std::make_unique<EngineType>(config, edmd::DomainLayout::serial(state.cells),
                                                 state.globals, std::move(state.records));
         m_view = {};
     }

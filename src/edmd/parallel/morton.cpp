@@ -92,17 +92,24 @@ void MortonGrid<D>::blockBox(std::uint64_t start, int log2Size, std::array<int, 
 }
 
 template <int D>
+void MortonGrid<D>::realBox(std::uint64_t start, int log2Size, std::array<int, D>& lo,
+                            std::array<int, D>& hi) const noexcept {
+    blockBox(start, log2Size, lo, hi);
+    // Real cells c with lo <= floor(c 2^b / n) < hi: from ceil(lo n / 2^b) to ceil(hi n / 2^b).
+    for (int d = 0; d < D; ++d) {
+        const int first = static_cast<int>(firstCellFrom(lo[d], m_cells[d], m_bits[d]));
+        const int end = static_cast<int>(firstCellFrom(hi[d], m_cells[d], m_bits[d]));
+        lo[d] = first;
+        hi[d] = std::max(first, std::min(end, m_cells[d]));
+    }
+}
+
+template <int D>
 std::uint64_t MortonGrid<D>::realCellsIn(std::uint64_t start, int log2Size) const noexcept {
     std::array<int, D> lo, hi;
-    blockBox(start, log2Size, lo, hi);
-    // Real cells c with lo <= floor(c 2^b / n) < hi: ceil(hi n / 2^b) - ceil(lo n / 2^b) per axis.
+    realBox(start, log2Size, lo, hi);
     std::uint64_t n = 1;
-    for (int d = 0; d < D; ++d) {
-        const std::int64_t extent =
-            firstCellFrom(hi[d], m_cells[d], m_bits[d]) - firstCellFrom(lo[d], m_cells[d], m_bits[d]);
-        if (extent <= 0) return 0;
-        n *= static_cast<std::uint64_t>(extent);
-    }
+    for (int d = 0; d < D; ++d) n *= static_cast<std::uint64_t>(hi[d] - lo[d]);
     return n;
 }
 

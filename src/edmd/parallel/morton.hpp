@@ -53,6 +53,10 @@ public:
     /// Real (unpadded) cells in the aligned block [start, start + 2^log2Size) (start divisible by
     /// 2^log2Size, log2Size <= totalBits): exact, from the box the block is, O(totalBits).
     std::uint64_t realCellsIn(std::uint64_t start, int log2Size) const noexcept;
+    /// The real cells of the aligned block [start, start + 2^log2Size): the box lo <= c < hi of
+    /// real-cell coordinates (hi[d] == lo[d] on some axis when the block holds none). O(totalBits).
+    void realBox(std::uint64_t start, int log2Size, std::array<int, D>& lo,
+                 std::array<int, D>& hi) const noexcept;
     /// The box of cells (lo inclusive, hi exclusive, in padded coordinates) that the aligned block
     /// [start, start + 2^log2Size) is. O(totalBits).
     void blockBox(std::uint64_t start, int log2Size, std::array<int, D>& lo,

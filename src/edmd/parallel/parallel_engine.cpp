@@ -153,34 +153,48 @@ std::array<int, 3> ParallelEngine<D>::coordsOf(std::uint32_t cell) const noexcep
 }
 
 template <int D>
-template <class Visit>
-void ParallelEngine<D>::forEachCellAround(std::uint32_t cell, Visit&& visit) const {
-    edmd::forEachCellAround<D>(coordsOf(cell), m_cells, m_config.periodic, std::forward<Visit>(visit));
+int ParallelEngine<D>::ownerOf(const std::array<int, 3>& c) const noexcept {
+    const std::uint32_t w = m_window.indexOf<D>(c);
+    if (w != CellWindow::kOutside) return m_owner[w];
+    std::array<int, D> cd;
+    for (int d = 0; d < D; ++d) cd[d] = c[d];
+    return m_map->owner(m_morton->indexOfCell(cd));
 }
 
 template <int D>
 void ParallelEngine<D>::recipients(std::uint32_t cell, std::vector<int>& out) const {
     // The ranks that own a cell of the 3^D neighbourhood hold this cell as their own or in their
     // halo; every change of a particle in it goes to them.
-    forEachCellAround(cell, [&](std::uint32_t index) {
-        const int r = m_owner[index];
+    m_window.forEachInGridAround<D>(coordsOf(cell), m_config.periodic, [&](const std::array<int, 3>& c) {
+        const int r = ownerOf(c);
         if (r != m_comm.rank() && std::find(out.begin(), out.end(), r) == out.end()) out.push_back(r);
     });
 }
 
 template <int D>
 void ParallelEngine<D>::buildLayout() {
-    std::size_t count = 1;
-    for (int d = 0; d < D; ++d) count *= static_cast<std::size_t>(m_cells[d]);
+    // The window: this rank's block (a box of real cells, morton.hpp) and one ring of halo.
+    const int me = m_comm.rank();
+    const DomainBlock& block = m_map->blockOf(me);
+    std::array<int, D> lo, hi;
+    m_morton->realBox(block.start, block.log2Size, lo, hi);
+    std::array<int, 3> lo3{0, 0, 0}, hi3{1, 1, 1};
+    for (int d = 0; d < D; ++d) {
+        lo3[d] = lo[d];
+        hi3[d] = hi[d];
+    }
+    m_window = CellWindow::around<D>(m_cells, m_config.periodic, lo3, hi3, 1);
+    const auto count = static_cast<std::uint32_t>(m_window.count());
     m_owner.resize(count);
-    for (std::size_t cell = 0; cell < count; ++cell) {
-        const std::array<int, 3> c3 = coordsOf(static_cast<std::uint32_t>(cell));
+    for (std::uint32_t w = 0; w < count; ++w) {
+        const std::array<int, 3> c3 = m_window.coordsOf<D>(w);
         std::array<int, D> c;
         for (int d = 0; d < D; ++d) c[d] = c3[d];
-        m_owner[cell] = m_map->owner(m_morton->indexOfCell(c));
+        m_owner[w] = m_map->owner(m_morton->indexOfCell(c));
     }
-    const int me = m_comm.rank();
     m_layout.cells = m_cells;
+    m_layout.window = m_window;
+    m_layout.domain = true;
     m_layout.role.assign(count, CellRole::Foreign);
     m_layout.globalParticles = m_globalCount;
     m_neighbourIndex.assign(static_cast<std::size_t>(m_comm.size()), -1);
@@ -191,20 +205,21 @@ void ParallelEngine<D>::buildLayout() {
     // two cells of this rank's own): records go directly, never forwarded (a forwarded record
     // would arrive late).
     std::vector<int> around;
-    for (std::size_t cell = 0; cell < count; ++cell) {
+    for (std::uint32_t w = 0; w < count; ++w) {
         around.clear();
         bool touchesMine = false;
-        forEachCellAround(static_cast<std::uint32_t>(cell), [&](std::uint32_t index) {
-            const int r = m_owner[index];
-            if (r == me)
-                touchesMine = true;
-            else if (std::find(around.begin(), around.end(), r) == around.end())
-                around.push_back(r);
-        });
-        if (m_owner[cell] == me) {
-            m_layout.role[cell] = around.empty() ? CellRole::Interior : CellRole::Border;
+        m_window.forEachInGridAround<D>(
+            m_window.coordsOf<D>(w), m_config.periodic, [&](const std::array<int, 3>& c) {
+                const int r = ownerOf(c);
+                if (r == me)
+                    touchesMine = true;
+                else if (std::find(around.begin(), around.end(), r) == around.end())
+                    around.push_back(r);
+            });
+        if (m_owner[w] == me) {
+            m_layout.role[w] = around.empty() ? CellRole::Interior : CellRole::Border;
         } else if (touchesMine) {
-            m_layout.role[cell] = CellRole::Halo;
+            m_layout.role[w] = CellRole::Halo;
             for (const int r : around)  // the cell's owner is among them
                 if (m_neighbourIndex[static_cast<std::size_t>(r)] < 0) {
                     m_neighbourIndex[static_cast<std::size_t>(r)] = 0;
@@ -212,12 +227,12 @@ void ParallelEngine<D>::buildLayout() {
                 }
         }
     }
-    // Fringe: interior cells with a border cell among their 3^D neighbours.
+    // Fringe: interior cells with a border cell among their 3^D neighbours (all in the window).
     m_layout.fringe.assign(count, 0);
-    for (std::size_t cell = 0; cell < count && m_parallel.fringeBorderEvents; ++cell) {
-        if (m_layout.role[cell] != CellRole::Interior) continue;
-        forEachCellAround(static_cast<std::uint32_t>(cell), [&](std::uint32_t index) {
-            if (m_layout.role[index] != CellRole::Interior) m_layout.fringe[cell] = 1;
+    for (std::uint32_t w = 0; w < count && m_parallel.fringeBorderEvents; ++w) {
+        if (m_layout.role[w] != CellRole::Interior) continue;
+        m_window.forEachAround<D>(m_window.coordsOf<D>(w), m_config.periodic, [&](std::uint32_t index) {
+            if (m_layout.role[index] != CellRole::Interior) m_layout.fringe[w] = 1;
         });
     }
     std::sort(m_neighbours.begin(), m_neighbours.end());
@@ -230,7 +245,7 @@ template <int D>
 void ParallelEngine<D>::distribute(std::vector<ParticleRecord> owned, bool everyRecord,
                                    const EngineGlobals& globals) {
     const double t0 = wallSeconds();
-    const auto cellOf = [this](const ParticleRecord& r) {
+    const auto cellOf = [this](const ParticleRecord& r) {  // grid index
         std::uint32_t index = 0, stride = 1;
         for (int d = 0; d < D; ++d) {
             index += stride * r.cell[d];
@@ -238,10 +253,14 @@ void ParallelEngine<D>::distribute(std::vector<ParticleRecord> owned, bool every
         }
         return index;
     };
+    const auto coords = [](const ParticleRecord& r) {
+        return std::array<int, 3>{r.cell[0], r.cell[1], r.cell[2]};
+    };
     std::vector<ParticleRecord> local;
     if (everyRecord) {  // every rank holds every record: keep the owned and halo ones
         for (auto& r : owned) {
-            const CellRole role = m_layout.role[cellOf(r)];
+            const std::uint32_t w = m_window.indexOf<D>(r.cell);
+            const CellRole role = w == CellWindow::kOutside ? CellRole::Foreign : m_layout.role[w];
             if (role == CellRole::Foreign) continue;
             if (role == CellRole::Halo) r.eventKind = 4;  // a copy: its owner schedules it
             local.push_back(r);
@@ -249,7 +268,7 @@ void ParallelEngine<D>::distribute(std::vector<ParticleRecord> owned, bool every
     } else {
         // Owned records to their new owners, then halo copies to the ranks around them.
         std::vector<std::vector<ParticleRecord>> out(static_cast<std::size_t>(m_comm.size()));
-        for (const auto& r : owned) out[static_cast<std::size_t>(m_owner[cellOf(r)])].push_back(r);
+        for (const auto& r : owned) out[static_cast<std::size_t>(ownerOf(coords(r)))].push_back(r);
         std::vector<ByteBuffer> buffers;
         for (auto& o : out) buffers.push_back(packRecords(o));
         std::vector<ParticleRecord> mine;
@@ -287,6 +306,7 @@ void ParallelEngine<D>::commitBarrier(Real t) {
     m_kernel->setTime(t);
     m_barrier = t;
     m_kernel->takeCellEvents(m_cellLoad);
+    m_kernel->reclaimDeadSlots();  // before the copy: both stay about N/P plus halo
     m_checkpointGlobals = m_kernel->globals();
     m_kernel->injectCausalityError(Kernel::kNever);  // a forced error belongs to one section
     if (m_checkpoint)
@@ -566,9 +586,9 @@ void ParallelEngine<D>::balance() {
     const DomainBlock& block = m_map->blockOf(m_comm.rank());
     const std::uint64_t half = block.log2Size > 0 ? (std::uint64_t{1} << (block.log2Size - 1)) : 1;
     std::array<double, 2> halves{0, 0};
-    for (std::size_t cell = 0; cell < m_cellLoad.size(); ++cell) {
+    for (std::uint32_t cell = 0; cell < m_cellLoad.size(); ++cell) {
         if (m_cellLoad[cell] == 0 || m_owner[cell] != m_comm.rank()) continue;
-        const std::array<int, 3> c3 = coordsOf(static_cast<std::uint32_t>(cell));
+        const std::array<int, 3> c3 = m_window.coordsOf<D>(cell);
         std::array<int, D> c;
         for (int d = 0; d < D; ++d) c[d] = c3[d];
         const std::uint64_t m = m_morton->indexOfCell(c);
@@ -652,7 +672,7 @@ EngineGlobals ParallelEngine<D>::gatherState(std::vector<ParticleRecord>& record
 template <int D>
 std::size_t ParallelEngine<D>::memoryBytes() const noexcept {
     return m_kernel->memoryBytes() + (m_checkpoint ? m_checkpoint->memoryBytes() : 0) +
-           m_owner.capacity() * sizeof(std::int32_t) + m_layout.role.capacity() +
+           m_owner.capacity() * sizeof(std::int32_t) + m_layout.role.capacity() + m_layout.fringe.capacity() +
            m_cellLoad.capacity() * sizeof(std::uint64_t);
 }
 

@@ -150,12 +150,12 @@ private:
     void commitBarrier(Real t);
     void rollback();
     void balance();
-    /// Calls visit(cell index) for every cell of the 3^D block around `cell` (itself included;
-    /// periodic axes wrap, walls cut the block).
-    template <class Visit>
-    void forEachCellAround(std::uint32_t cell, Visit&& visit) const;
+    /// The other ranks that hold the cell with this grid index (x fastest over the whole grid)
+    /// as their own or in their halo, appended to `out` once each.
     void recipients(std::uint32_t cell, std::vector<int>& out) const;
     std::array<int, 3> coordsOf(std::uint32_t cell) const noexcept;
+    /// Rank owning the cell with grid coordinates c: from the window's table, else the map.
+    int ownerOf(const std::array<int, 3>& c) const noexcept;
 
     Communicator& m_comm;
     EngineConfig m_config;
@@ -164,7 +164,11 @@ private:
     std::array<int, 3> m_cells{1, 1, 1};
     std::unique_ptr<MortonGrid<D>> m_morton;
     std::unique_ptr<DomainMap> m_map;
-    std::vector<std::int32_t> m_owner;  ///< rank of each cell (x fastest)
+    /// This rank's cells with tables (its block's cells and one halo ring around them): every
+    /// per-cell table below and the kernel's are this window's, so a rank's memory is about N/P
+    /// plus its halo (spec 3.6), not the whole grid.
+    CellWindow m_window;
+    std::vector<std::int32_t> m_owner;  ///< rank of each window cell
     DomainLayout m_layout;
     std::vector<int> m_neighbours;      ///< ranks owning a cell of this rank's halo, ascending
     std::vector<int> m_neighbourIndex;  ///< rank -> position in m_neighbours, -1 if none
@@ -174,7 +178,7 @@ private:
     std::unique_ptr<Kernel> m_checkpoint;   ///< an exact copy of the kernel at the barrier
     Real m_barrier = 0;                     ///< [s] time of the last barrier
     Real m_interval = 0;                    ///< [s] current barrier interval
-    std::vector<std::uint64_t> m_cellLoad;  ///< events per cell since the last balancing
+    std::vector<std::uint64_t> m_cellLoad;  ///< events per window cell since the last balancing
     std::vector<typename Kernel::Change> m_changes;
     // Buffers of exchange(), kept between steps.
     std::vector<std::vector<ParticleRecord>> m_outgoing;
