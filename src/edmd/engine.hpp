@@ -295,8 +295,9 @@ public:
     /// Domain mode: frees the slots of particles that left this rank's cells and halo when they
     /// are an eighth of all (at least 256); slots are never reused in between, so a long run
     /// would otherwise grow with every particle that ever passed through the halo. Physically a
-    /// no-op (every order is by id); the parallel engine calls it at barriers.
-    void reclaimDeadSlots();
+    /// no-op (every order is by id); the parallel engine calls it at barriers. Returns the
+    /// slots freed.
+    std::uint32_t reclaimDeadSlots();
     /// Moves the changes since the last call to `out` (cleared first), in the order made.
     void drainChanges(std::vector<Change>& out);
     /// Particles this engine owns (domain mode: those in its own cells; else all).

@@ -558,11 +558,11 @@ void Engine<D, Queue>::reserveSlots(std::size_t n) {
 }
 
 template <int D, class Queue>
-void Engine<D, Queue>::reclaimDeadSlots() {
-    if (!m_domain) return;
+std::uint32_t Engine<D, Queue>::reclaimDeadSlots() {
+    if (!m_domain) return 0;
     DomainData& dom = *m_domain;
     const std::uint32_t n = size();
-    if (dom.deadCount < 256 || 8 * std::uint64_t{dom.deadCount} < n) return;
+    if (dom.deadCount < 256 || 8 * std::uint64_t{dom.deadCount} < n) return 0;
     // Live slots move down in order (newSlot[s] <= s: in place, ascending). Slot numbers change
     // nothing physical: every order between particles is by id.
     std::vector<std::uint32_t> newSlot(n, kNone);
@@ -612,6 +612,7 @@ void Engine<D, Queue>::reclaimDeadSlots() {
     dom.border.setTieKeys(m_id.data());
     dom.border.reset(live);
     for (std::uint32_t t = 0; t < live; ++t) dom.border.set(t, borderTimes[t]);
+    return n - live;
 }
 
 template <int D, class Queue>
@@ -784,7 +785,7 @@ std::uint64_t Engine<D, Queue>::runDomain(EventKey limit, EventKey stopAfterBord
     template void Engine<D, Q>::countCellEvents();                                         \
     template bool Engine<D, Q>::realSlot(std::uint32_t) const noexcept;                    \
     template std::size_t Engine<D, Q>::domainMemoryBytes() const noexcept;                 \
-    template void Engine<D, Q>::reclaimDeadSlots();
+    template std::uint32_t Engine<D, Q>::reclaimDeadSlots();
 
 GRANULAB_EDMD_DOMAIN_MEMBERS(2, AddressableHeap)
 GRANULAB_EDMD_DOMAIN_MEMBERS(2, TournamentTree)

@@ -120,6 +120,9 @@ if rows(f"{work}/long2/final.csv") != rows(f"{work}/long1/final.csv"):
 late = sum(r["late_records_applied"] for r in json.load(open(f"{work}/long2/summary.json"))["parallel"]["per_rank"])
 if late == 0:
     failures.append("long2: no late record was applied (the run no longer tests that path)")
+reclaimed = sum(r["slots_reclaimed"] for r in json.load(open(f"{work}/long2/summary.json"))["parallel"]["per_rank"])
+if reclaimed == 0:
+    failures.append("long2: no dead slot was reclaimed (the run no longer tests that path)")
 # Haff's law holds in the parallel run as in the serial one (homogeneous cooling before tau ~ 1).
 for k, row in enumerate(rows(f"{work}/np3/series.csv")[1:]):
     r = dict(zip(header, row))

@@ -115,7 +115,7 @@ public:
     nlohmann::json rankKeys(double engineSeconds) const {
         const auto& p = m_engine->parallelStats();
         const auto& local = m_engine->localStats();
-        const std::array<double, 15> mine{static_cast<double>(local.events),
+        const std::array<double, 16> mine{static_cast<double>(local.events),
                                           static_cast<double>(local.collisions),
                                           static_cast<double>(m_engine->ownedCount()),
                                           static_cast<double>(p.sections),
@@ -129,7 +129,8 @@ public:
                                           p.communicationSeconds,
                                           p.rebuildSeconds,
                                           static_cast<double>(m_engine->memoryBytes()),
-                                          static_cast<double>(p.lateRecords)};
+                                          static_cast<double>(p.lateRecords),
+                                          static_cast<double>(p.slotsReclaimed)};
         const std::vector<double> all = m_comm.allGather(mine);
         if (!root()) return nullptr;
         nlohmann::json ranks = nlohmann::json::array();
@@ -148,6 +149,7 @@ public:
                              {"bytes_sent", f[8]},
                              {"events_undone", f[9]},
                              {"late_records_applied", f[14]},
+                             {"slots_reclaimed", f[15]},
                              {"events_between_errors", rollbacks > 0 ? events / rollbacks : events},
                              {"events_between_communications", steps > 0 ? events / steps : events},
                              {"compute_s", f[10]},

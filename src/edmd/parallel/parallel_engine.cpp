@@ -306,7 +306,7 @@ void ParallelEngine<D>::commitBarrier(Real t) {
     m_kernel->setTime(t);
     m_barrier = t;
     m_kernel->takeCellEvents(m_cellLoad);
-    m_kernel->reclaimDeadSlots();  // before the copy: both stay about N/P plus halo
+    m_stats.slotsReclaimed += m_kernel->reclaimDeadSlots();  // before the copy: both stay ~N/P + halo
     m_checkpointGlobals = m_kernel->globals();
     m_kernel->injectCausalityError(Kernel::kNever);  // a forced error belongs to one section
     if (m_checkpoint)

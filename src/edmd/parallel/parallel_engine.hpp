@@ -51,6 +51,7 @@ struct ParallelStats {
     std::uint64_t bytesSent = 0;
     std::uint64_t eventsUndone = 0;   ///< events discarded by rollbacks
     std::uint64_t lateRecords = 0;    ///< records that arrived late and were applied as at their time
+    std::uint64_t slotsReclaimed = 0;  ///< kernel slots of departed particles freed at barriers
     std::uint64_t balanceMoves = 0;   ///< three-rank moves made (all ranks count every move)
     std::uint64_t migrationsIn = 0;   ///< records received at redistributions
     double computeSeconds = 0;        ///< [s] wall time in the event loop
