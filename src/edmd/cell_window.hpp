@@ -15,7 +15,7 @@ namespace granulab::edmd {
 
 struct CellWindow {
     static constexpr std::uint32_t kOutside = 0xFFFFFFFFu;  ///< index of a cell outside the window
-    std::array<int, 3> cells{1, 1, 1};   ///< cells per axis of the whole grid
+    std::array<int, 3> cells{1, 1, 1};                      ///< cells per axis of the whole grid
     std::array<int, 3> origin{0, 0, 0};  ///< grid coordinate of the window's first cell per axis
     std::array<int, 3> extent{1, 1, 1};  ///< window cells per axis (cells[d]: the whole axis, origin 0)
 
@@ -28,7 +28,8 @@ struct CellWindow {
     /// empty window (count() == 0).
     template <int D>
     static CellWindow around(const std::array<int, 3>& cells, const std::array<bool, 3>& periodic,
-                             const std::array<int, 3>& lo, const std::array<int, 3>& hi, int margin) noexcept {
+                             const std::array<int, 3>& lo, const std::array<int, 3>& hi,
+                             int margin) noexcept {
         CellWindow w = whole(cells);
         for (int d = 0; d < D; ++d) {
             if (hi[d] <= lo[d]) {

@@ -28,7 +28,8 @@ public:
     void set(std::uint32_t id, std::uint32_t slot) {
         if (2 * (m_size + 1) > m_table.size()) grow();
         std::size_t i = home(id);
-        while (m_table[i] != kEmpty && static_cast<std::uint32_t>(m_table[i] >> 32) != id) i = (i + 1) & mask();
+        while (m_table[i] != kEmpty && static_cast<std::uint32_t>(m_table[i] >> 32) != id)
+            i = (i + 1) & mask();
         if (m_table[i] == kEmpty) ++m_size;
         m_table[i] = entry(id, slot);
     }

@@ -49,14 +49,14 @@ struct ParallelStats {
     std::uint64_t steps = 0;            ///< communication phases
     std::uint64_t recordsSent = 0;      ///< particle records sent to neighbours
     std::uint64_t bytesSent = 0;
-    std::uint64_t eventsUndone = 0;   ///< events discarded by rollbacks
-    std::uint64_t lateRecords = 0;    ///< records that arrived late and were applied as at their time
+    std::uint64_t eventsUndone = 0;    ///< events discarded by rollbacks
+    std::uint64_t lateRecords = 0;     ///< records that arrived late and were applied as at their time
     std::uint64_t slotsReclaimed = 0;  ///< kernel slots of departed particles freed at barriers
-    std::uint64_t balanceMoves = 0;   ///< three-rank moves made (all ranks count every move)
-    std::uint64_t migrationsIn = 0;   ///< records received at redistributions
-    double computeSeconds = 0;        ///< [s] wall time in the event loop
-    double communicationSeconds = 0;  ///< [s] wall time in exchanges and reductions (waiting included)
-    double rebuildSeconds = 0;        ///< [s] checkpoints, rollbacks, redistributions
+    std::uint64_t balanceMoves = 0;    ///< three-rank moves made (all ranks count every move)
+    std::uint64_t migrationsIn = 0;    ///< records received at redistributions
+    double computeSeconds = 0;         ///< [s] wall time in the event loop
+    double communicationSeconds = 0;   ///< [s] wall time in exchanges and reductions (waiting included)
+    double rebuildSeconds = 0;         ///< [s] checkpoints, rollbacks, redistributions
 };
 
 /// The record's particle in free flight to time t >= r.tst [s]: position (wrapped into the box
