@@ -262,10 +262,13 @@ void Engine<D, Queue>::regrid() {
 
 template <int D, class Queue>
 std::uint32_t Engine<D, Queue>::cellIndex(const CellCoords& c) const noexcept {
+    // CellWindow::local without the outside test (a hot path: every link, unlink and
+    // prediction); the wrap compiles to a conditional move.
     std::uint32_t k = 0;
     for (int d = 0; d < D; ++d) {
-        const int l = m_window.local(d, c[d]);
-        GL_ASSERT(l >= 0, "edmd::Engine: cell outside the window");
+        int l = static_cast<int>(c[d]) - m_window.origin[d];
+        l += l < 0 ? m_cells[d] : 0;
+        GL_ASSERT(l < m_window.extent[d], "edmd::Engine: cell outside the window");
         k += m_stride[d] * static_cast<std::uint32_t>(l);
     }
     GL_ASSERT(k < m_head.size(), "edmd::Engine: cell index out of range");

@@ -358,7 +358,7 @@ void Engine<D, Queue>::scheduleDomainBorder(std::uint32_t s) noexcept {
         if (k == m_cells[d]) k = 0;
         if (k < 0) k = m_cells[d] - 1;
         c[d] = static_cast<std::uint16_t>(k);
-        border = roleOfCell(c) != CellRole::Interior;
+        border = dom.role[cellIndex(c)] != CellRole::Interior;  // next to an owned cell: in the window
     }
     dom.border.set(s, border ? m_queue.time(s) : kNoEvent);
 }
@@ -394,7 +394,8 @@ bool Engine<D, Queue>::settledAround(const CellCoords& c, Real t) const noexcept
 
 template <int D, class Queue>
 void Engine<D, Queue>::noteChange(std::uint32_t s, const CellCoords& oldCell) {
-    if (roleOfCell(oldCell) == CellRole::Interior && roleOf(s) == CellRole::Interior) return;
+    // Both cells lie in the window (the particle's cell before and after one event).
+    if (m_domain->role[cellIndex(oldCell)] == CellRole::Interior && roleOf(s) == CellRole::Interior) return;
     // Every change is sent, not only the last of a step: a neighbour applies each at its time.
     m_domain->changes.push_back({recordOf(s), gridIndex(oldCell), gridIndex(m_cellOf[s])});
 }
