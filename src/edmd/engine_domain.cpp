@@ -184,18 +184,28 @@ Engine<D, Queue>::Engine(const Engine& other) : m_config(other.m_config) {
 template <int D, class Queue>
 Engine<D, Queue>& Engine<D, Queue>::operator=(const Engine& o) {
     if (this == &o) return *this;
+    // The per-slot arrays keep the source's room: the rollback copy is refreshed at every
+    // barrier, and a copy sized to the slots alone would be reallocated (fresh pages, zeroed
+    // by the kernel) whenever the halo has grown since.
+    const auto assign = [](auto& to, const auto& from) {
+        if (to.capacity() < from.capacity()) {
+            to.clear();
+            to.reserve(from.capacity());
+        }
+        to = from;
+    };
     m_config = o.m_config;
-    m_s = o.m_s;
-    m_event = o.m_event;
-    m_cellOf = o.m_cellOf;
+    assign(m_s, o.m_s);
+    assign(m_event, o.m_event);
+    assign(m_cellOf, o.m_cellOf);
     m_slot = o.m_slot;
-    m_id = o.m_id;
-    m_radius = o.m_radius;
-    m_mass = o.m_mass;
+    assign(m_id, o.m_id);
+    assign(m_radius, o.m_radius);
+    assign(m_mass, o.m_mass);
     m_uniformRadius = o.m_uniformRadius;
     m_uniformMass = o.m_uniformMass;
-    m_omega = o.m_omega;
-    m_lastCollision = o.m_lastCollision;
+    assign(m_omega, o.m_omega);
+    assign(m_lastCollision, o.m_lastCollision);
     m_head = o.m_head;
     m_queue = o.m_queue;
     m_cells = o.m_cells;
