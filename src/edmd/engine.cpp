@@ -216,14 +216,7 @@ void Engine<D, Queue>::sortParticles(bool requeue) {
     for (std::uint32_t s = 0; s < n; ++s)
         while (newSlot[s] != s) {
             const std::uint32_t d = newSlot[s];
-            std::swap(m_s[s], m_s[d]);
-            std::swap(m_event[s], m_event[d]);
-            std::swap(m_cellOf[s], m_cellOf[d]);
-            std::swap(m_id[s], m_id[d]);
-            if (!m_radius.empty()) std::swap(m_radius[s], m_radius[d]);
-            if (!m_mass.empty()) std::swap(m_mass[s], m_mass[d]);
-            if (!m_omega.empty()) std::swap(m_omega[s], m_omega[d]);
-            if (!m_lastCollision.empty()) std::swap(m_lastCollision[s], m_lastCollision[d]);
+            forEachSlotArray([s, d](auto& array) { std::swap(array[s], array[d]); });
             std::swap(newSlot[s], newSlot[d]);
         }
     // Cell lists in ascending slot order (memory-forward traversal).

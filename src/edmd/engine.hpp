@@ -460,6 +460,19 @@ private:
     std::uint32_t addSlot(std::uint32_t id);
     /// Reserves room for n slots in every per-slot array.
     void reserveSlots(std::size_t n);
+    /// Calls f(array) for every per-slot array in use (the optional ones only when present);
+    /// a new per-particle array is added here.
+    template <class F>
+    void forEachSlotArray(F&& f) {
+        f(m_s);
+        f(m_event);
+        f(m_cellOf);
+        f(m_id);
+        if (!m_radius.empty()) f(m_radius);
+        if (!m_mass.empty()) f(m_mass);
+        if (!m_omega.empty()) f(m_omega);
+        if (!m_lastCollision.empty()) f(m_lastCollision);
+    }
     void killSlot(std::uint32_t s) noexcept;
     ParticleRecord recordOf(std::uint32_t s) const;
     void setFromRecord(std::uint32_t s, const ParticleRecord& r);

@@ -557,14 +557,7 @@ void Engine<D, Queue>::killSlot(std::uint32_t s) noexcept {
 
 template <int D, class Queue>
 void Engine<D, Queue>::reserveSlots(std::size_t n) {
-    m_s.reserve(n);
-    m_event.reserve(n);
-    m_cellOf.reserve(n);
-    m_id.reserve(n);
-    if (!m_radius.empty()) m_radius.reserve(n);
-    if (!m_mass.empty()) m_mass.reserve(n);
-    if (!m_omega.empty()) m_omega.reserve(n);
-    if (!m_lastCollision.empty()) m_lastCollision.reserve(n);
+    forEachSlotArray([n](auto& array) { array.reserve(n); });
     if (m_domain) m_domain->dead.reserve(n);
 }
 
@@ -586,23 +579,9 @@ std::uint32_t Engine<D, Queue>::reclaimDeadSlots() {
         if (t == kNone) continue;
         times[t] = m_queue.time(s);
         borderTimes[t] = dom.border.time(s);
-        m_s[t] = m_s[s];
-        m_event[t] = m_event[s];
-        m_cellOf[t] = m_cellOf[s];
-        m_id[t] = m_id[s];
-        if (!m_radius.empty()) m_radius[t] = m_radius[s];
-        if (!m_mass.empty()) m_mass[t] = m_mass[s];
-        if (!m_omega.empty()) m_omega[t] = m_omega[s];
-        if (!m_lastCollision.empty()) m_lastCollision[t] = m_lastCollision[s];
+        forEachSlotArray([s, t](auto& array) { array[t] = array[s]; });
     }
-    m_s.resize(live);
-    m_event.resize(live);
-    m_cellOf.resize(live);
-    m_id.resize(live);
-    if (!m_radius.empty()) m_radius.resize(live);
-    if (!m_mass.empty()) m_mass.resize(live);
-    if (!m_omega.empty()) m_omega.resize(live);
-    if (!m_lastCollision.empty()) m_lastCollision.resize(live);
+    forEachSlotArray([live](auto& array) { array.resize(live); });
     dom.dead.assign(live, 0);
     dom.deadCount = 0;
     // Slot references: an event naming a dead slot (annulled at its time, since killSlot raised
