@@ -120,6 +120,9 @@ Engine<D, Queue>::Engine(EngineConfig config, const DomainLayout& layout, const 
     m_nextSort = m_stats.events + kSortEvery * std::max<std::uint64_t>(n, 1);
     if (layout.domain) {
         m_domain = std::make_unique<DomainData>();
+        // Room for the halo's comings and goings between two reclaimDeadSlots(); before any
+        // pointer into the per-slot arrays (the queues' tie keys) is taken.
+        reserveSlots(n + n / 8 + 1024);
         m_domain->slots = std::move(slots);
         m_domain->globalParticles = idCount;
         m_domain->role = layout.role;
@@ -129,8 +132,6 @@ Engine<D, Queue>::Engine(EngineConfig config, const DomainLayout& layout, const 
         m_domain->border.setTieKeys(m_id.data());
         m_domain->border.reset(n);
         m_domain->dead.assign(n, 0);
-        // Room for the halo's comings and goings between two reclaimDeadSlots().
-        reserveSlots(n + n / 8 + 1024);
     }
     m_queue.setTieKeys(m_id.data());
     m_queue.reset(n);
