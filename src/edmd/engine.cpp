@@ -331,6 +331,7 @@ typename Engine<D, Queue>::V Engine<D, Queue>::separation(std::uint32_t i, std::
 
 template <int D, class Queue>
 typename Engine<D, Queue>::V Engine<D, Queue>::positionNow(std::uint32_t i) const noexcept {
+    GL_ASSERT(!m_domain, "edmd::Engine: per-particle queries are for serial engines");
     return positionSlot(m_slot[i]);
 }
 

@@ -209,6 +209,8 @@ public:
     std::uint32_t size() const noexcept { return static_cast<std::uint32_t>(m_s.size()); }
     std::array<int, 3> cellsPerAxis() const noexcept { return m_cells; }
 
+    /// Per-particle queries by particle index i (below, to collisions(i)): serial engines only;
+    /// a domain engine holds a part of the particles and answers through records().
     /// Position [m] (wrapped into the box on periodic axes) and velocity [m/s] of particle i
     /// extrapolated to the current time; the schedule is not touched.
     V positionNow(std::uint32_t i) const noexcept;

@@ -371,6 +371,9 @@ void Engine<D, Queue>::scheduleDomainBorder(std::uint32_t s) noexcept {
         c[d] = static_cast<std::uint16_t>(k);
         border = dom.role[cellIndex(c)] != CellRole::Interior;  // next to an owned cell: in the window
     }
+    // Most predictions are of interior particles that were not in the border queue either:
+    // nothing to move there.
+    if (!border && dom.border.time(s) == kNoEvent) return;
     dom.border.set(s, border ? m_queue.time(s) : kNoEvent);
 }
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Global particle id -> storage slot for one rank of the parallel event-driven engine (edmd spec
 // 3.6: a rank holds its own particles and the virtual copies of its halo). Open addressing with
-// linear probing in one flat array (load <= 1/2, deletion by backward shift, no tombstones): a
+// linear probing in one flat array (load <= 3/4, deletion by backward shift, no tombstones): a
 // rank's memory grows with the particles it holds (N/P plus halo), not with N, and the rollback
 // copy of spec 3.4 is one array copy.
 #pragma once
@@ -26,7 +26,7 @@ public:
     }
     /// Maps `id` to `slot` (slot != kNone), replacing its slot if it is held.
     void set(std::uint32_t id, std::uint32_t slot) {
-        if (2 * (m_size + 1) > m_table.size()) grow();
+        if (4 * (m_size + 1) > 3 * m_table.size()) grow();
         std::size_t i = home(id);
         while (m_table[i] != kEmpty && static_cast<std::uint32_t>(m_table[i] >> 32) != id)
             i = (i + 1) & mask();
