@@ -269,16 +269,6 @@ std::uint32_t Engine<D, Queue>::cellIndex(const CellCoords& c) const noexcept {
 }
 
 template <int D, class Queue>
-std::uint32_t Engine<D, Queue>::gridIndex(const CellCoords& c) const noexcept {
-    std::uint32_t k = 0, stride = 1;
-    for (int d = 0; d < D; ++d) {
-        k += stride * c[d];
-        stride *= static_cast<std::uint32_t>(m_cells[d]);
-    }
-    return k;
-}
-
-template <int D, class Queue>
 void Engine<D, Queue>::linkCell(std::uint32_t s) noexcept {
     std::uint32_t& head = m_head[cellIndex(m_cellOf[s])];
     m_s[s].next = head;

@@ -287,12 +287,11 @@ public:
     /// neighbourhood; causalityError() is then the earliest such time.
     bool receive(const ParticleRecord& record);
     Real causalityError() const noexcept;
-    /// A changed particle that other ranks may see: its record and its cell before and after
-    /// the change, as grid indices (x fastest over the whole grid; both cells decide who
-    /// receives it).
+    /// A changed particle that other ranks may see: its record (with its cell after the change)
+    /// and its cell before, in grid coordinates (both cells decide who receives it).
     struct Change {
         ParticleRecord record;
-        std::uint32_t oldCell = 0, newCell = 0;
+        std::array<std::uint16_t, 3> oldCell{};
     };
     /// Domain mode: frees the slots of particles that left this rank's cells and halo when they
     /// are an eighth of all (at least 256); slots are never reused in between, so a long run
@@ -422,8 +421,6 @@ private:
     void regrid();
     /// Window index of a cell that lies in the window (the per-cell tables' index).
     std::uint32_t cellIndex(const CellCoords& c) const noexcept;
-    /// Grid index of a cell (x fastest over the whole grid).
-    std::uint32_t gridIndex(const CellCoords& c) const noexcept;
     void linkCell(std::uint32_t s) noexcept;
     void unlinkCell(std::uint32_t s) noexcept;
     V minimumImage(V d) const noexcept;

@@ -411,7 +411,9 @@ void Engine<D, Queue>::noteChange(std::uint32_t s, const CellCoords& oldCell) {
     // Both cells lie in the window (the particle's cell before and after one event).
     if (m_domain->role[cellIndex(oldCell)] == CellRole::Interior && roleOf(s) == CellRole::Interior) return;
     // Every change is sent, not only the last of a step: a neighbour applies each at its time.
-    m_domain->changes.push_back({recordOf(s), gridIndex(oldCell), gridIndex(m_cellOf[s])});
+    Change change{recordOf(s), {}};
+    for (int d = 0; d < D; ++d) change.oldCell[d] = oldCell[d];
+    m_domain->changes.push_back(change);
 }
 
 template <int D, class Queue>

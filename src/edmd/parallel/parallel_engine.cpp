@@ -143,29 +143,23 @@ std::array<int, 3> ParallelEngine<D>::gridFor(EngineConfig config,
 }
 
 template <int D>
-std::array<int, 3> ParallelEngine<D>::coordsOf(std::uint32_t cell) const noexcept {
-    std::array<int, 3> c{0, 0, 0};
-    for (int d = 0; d < D; ++d) {
-        c[d] = static_cast<int>(cell % static_cast<std::uint32_t>(m_cells[d]));
-        cell /= static_cast<std::uint32_t>(m_cells[d]);
-    }
-    return c;
+std::uint64_t ParallelEngine<D>::mortonOf(const std::array<int, 3>& c) const noexcept {
+    std::array<int, D> cd;
+    for (int d = 0; d < D; ++d) cd[d] = c[d];
+    return m_morton->indexOfCell(cd);
 }
 
 template <int D>
 int ParallelEngine<D>::ownerOf(const std::array<int, 3>& c) const noexcept {
     const std::uint32_t w = m_window.indexOf<D>(c);
-    if (w != CellWindow::kOutside) return m_owner[w];
-    std::array<int, D> cd;
-    for (int d = 0; d < D; ++d) cd[d] = c[d];
-    return m_map->owner(m_morton->indexOfCell(cd));
+    return w != CellWindow::kOutside ? m_owner[w] : m_map->owner(mortonOf(c));
 }
 
 template <int D>
-void ParallelEngine<D>::recipients(std::uint32_t cell, std::vector<int>& out) const {
+void ParallelEngine<D>::recipients(const std::array<std::uint16_t, 3>& cell, std::vector<int>& out) const {
     // The ranks that own a cell of the 3^D neighbourhood hold this cell as their own or in their
     // halo; every change of a particle in it goes to them.
-    m_window.forEachInGridAround<D>(coordsOf(cell), m_config.periodic, [&](const std::array<int, 3>& c) {
+    m_window.forEachInGridAround<D>(cell, m_config.periodic, [&](const std::array<int, 3>& c) {
         const int r = ownerOf(c);
         if (r != m_comm.rank() && std::find(out.begin(), out.end(), r) == out.end()) out.push_back(r);
     });
@@ -186,12 +180,7 @@ void ParallelEngine<D>::buildLayout() {
     m_window = CellWindow::around<D>(m_cells, m_config.periodic, lo3, hi3, 1);
     const auto count = static_cast<std::uint32_t>(m_window.count());
     m_owner.resize(count);
-    for (std::uint32_t w = 0; w < count; ++w) {
-        const std::array<int, 3> c3 = m_window.coordsOf<D>(w);
-        std::array<int, D> c;
-        for (int d = 0; d < D; ++d) c[d] = c3[d];
-        m_owner[w] = m_map->owner(m_morton->indexOfCell(c));
-    }
+    for (std::uint32_t w = 0; w < count; ++w) m_owner[w] = m_map->owner(mortonOf(m_window.coordsOf<D>(w)));
     m_layout.cells = m_cells;
     m_layout.window = m_window;
     m_layout.domain = true;
@@ -245,14 +234,6 @@ template <int D>
 void ParallelEngine<D>::distribute(std::vector<ParticleRecord> owned, bool everyRecord,
                                    const EngineGlobals& globals) {
     const double t0 = wallSeconds();
-    const auto cellOf = [this](const ParticleRecord& r) {  // grid index
-        std::uint32_t index = 0, stride = 1;
-        for (int d = 0; d < D; ++d) {
-            index += stride * r.cell[d];
-            stride *= static_cast<std::uint32_t>(m_cells[d]);
-        }
-        return index;
-    };
     const auto coords = [](const ParticleRecord& r) {
         return std::array<int, 3>{r.cell[0], r.cell[1], r.cell[2]};
     };
@@ -278,7 +259,7 @@ void ParallelEngine<D>::distribute(std::vector<ParticleRecord> owned, bool every
         std::vector<int> around;
         for (const auto& r : mine) {
             around.clear();
-            recipients(cellOf(r), around);
+            recipients(r.cell, around);
             ParticleRecord copy = r;
             copy.eventKind = 4;
             for (const int k : around) copies[static_cast<std::size_t>(k)].push_back(copy);
@@ -341,7 +322,7 @@ void ParallelEngine<D>::exchange(EventKey limit, std::vector<EventKey>* announce
     for (const auto& ch : m_changes) {
         to.clear();
         recipients(ch.oldCell, to);
-        if (ch.newCell != ch.oldCell) recipients(ch.newCell, to);
+        if (ch.record.cell != ch.oldCell) recipients(ch.record.cell, to);
         for (const int r : to) {
             const int k = m_neighbourIndex[static_cast<std::size_t>(r)];
             if (k < 0) throw std::logic_error("edmd parallel: a change for a rank that is not a neighbour");
@@ -588,10 +569,7 @@ void ParallelEngine<D>::balance() {
     std::array<double, 2> halves{0, 0};
     for (std::uint32_t cell = 0; cell < m_cellLoad.size(); ++cell) {
         if (m_cellLoad[cell] == 0 || m_owner[cell] != m_comm.rank()) continue;
-        const std::array<int, 3> c3 = m_window.coordsOf<D>(cell);
-        std::array<int, D> c;
-        for (int d = 0; d < D; ++d) c[d] = c3[d];
-        const std::uint64_t m = m_morton->indexOfCell(c);
+        const std::uint64_t m = mortonOf(m_window.coordsOf<D>(cell));
         halves[m - block.start < half ? 0 : 1] += static_cast<double>(m_cellLoad[cell]);
     }
     const std::vector<double> all = m_comm.allGather(halves);

@@ -151,10 +151,11 @@ private:
     void commitBarrier(Real t);
     void rollback();
     void balance();
-    /// The other ranks that hold the cell with this grid index (x fastest over the whole grid)
-    /// as their own or in their halo, appended to `out` once each.
-    void recipients(std::uint32_t cell, std::vector<int>& out) const;
-    std::array<int, 3> coordsOf(std::uint32_t cell) const noexcept;
+    /// The other ranks that hold the cell with grid coordinates c as their own or in their
+    /// halo, appended to `out` once each.
+    void recipients(const std::array<std::uint16_t, 3>& c, std::vector<int>& out) const;
+    /// Morton number of the cell with grid coordinates c (axes >= D ignored).
+    std::uint64_t mortonOf(const std::array<int, 3>& c) const noexcept;
     /// Rank owning the cell with grid coordinates c: from the window's table, else the map.
     int ownerOf(const std::array<int, 3>& c) const noexcept;
 
