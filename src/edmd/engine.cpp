@@ -255,15 +255,8 @@ void Engine<D, Queue>::regrid() {
 
 template <int D, class Queue>
 std::uint32_t Engine<D, Queue>::cellIndex(const CellCoords& c) const noexcept {
-    // CellWindow::local without the outside test (a hot path: every link, unlink and
-    // prediction); the wrap compiles to a conditional move.
     std::uint32_t k = 0;
-    for (int d = 0; d < D; ++d) {
-        int l = static_cast<int>(c[d]) - m_window.origin[d];
-        l += l < 0 ? m_cells[d] : 0;
-        GL_ASSERT(l < m_window.extent[d], "edmd::Engine: cell outside the window");
-        k += m_stride[d] * static_cast<std::uint32_t>(l);
-    }
+    for (int d = 0; d < D; ++d) k += m_stride[d] * static_cast<std::uint32_t>(windowCoordinate(d, c[d]));
     GL_ASSERT(k < m_head.size(), "edmd::Engine: cell index out of range");
     return k;
 }
@@ -435,10 +428,10 @@ template <int D, class Queue>
     for (int d = 0; d < D; ++d) {
         const int cd = c[d];
         GL_ASSERT(cd < m_cells[d], "edmd::Engine: cell coordinate out of range");
-        const int l = m_window.local(d, cd), extent = m_window.extent[d];
+        const int l = windowCoordinate(d, cd), extent = m_window.extent[d];
         const bool lower = cd > 0 || m_config.periodic[d],
                    upper = cd + 1 < m_cells[d] || m_config.periodic[d];
-        GL_ASSERT(l >= 0 && (extent == m_cells[d] || ((l > 0 || !lower) && (l + 1 < extent || !upper))),
+        GL_ASSERT(extent == m_cells[d] || ((l > 0 || !lower) && (l + 1 < extent || !upper)),
                   "edmd::Engine: predicting a particle at the edge of the window");
         int k = 0;
         if (lower) {
