@@ -45,6 +45,10 @@ int main(int argc, char** argv) {
     run->add_flag("--overwrite", runOpt.overwrite,
                   "remove an earlier run's outputs from the output folder first (granulab's files only)");
     run->add_flag("--quiet,-q", runOpt.quiet, "no progress output");
+    std::string threads;
+    run->add_option(
+        "--threads", threads,
+        "threads of the DEM step (0: every core); the same as --set run.threads=N, which it overrides");
     run->footer(
         "example: granulab run examples/disks_in_box.toml --set run.end_time=0.05 --out runs/short\n"
         "Ctrl-C (SIGINT) or SIGTERM stops after the current step or event with a checkpoint; exit\n"
@@ -188,6 +192,7 @@ int main(int argc, char** argv) {
         std::vector<io::Override> overrides;
         for (const auto& s : sets) overrides.push_back(io::parseOverride(s));
         if (*run) {
+            if (!threads.empty()) overrides.push_back(io::parseOverride("run.threads=" + threads));
             runOpt.overrides = overrides;
             return app::runCommand(runOpt);
         }

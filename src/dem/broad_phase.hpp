@@ -41,6 +41,11 @@ public:
     virtual std::size_t memoryBytes() const noexcept { return 0; }
     /// Particles were removed and the slots renumbered: forget state kept by slot.
     virtual void slotsRenumbered() {}
+    /// Threads of findPairs (the result does not depend on them).
+    void setThreads(int threads) noexcept { m_threads = threads > 1 ? threads : 1; }
+
+protected:
+    int m_threads = 1;
 };
 
 /// O(N^2) reference.
@@ -53,7 +58,9 @@ public:
 };
 
 /// Uniform cell grid with cell size >= 2 r_max + margin, so any size distribution is safe;
-/// the grid spans the particles' bounding box, so no particle can leave it.
+/// the grid spans the particles' bounding box, so no particle can leave it. findPairs runs on
+/// threads over blocks of slots; spatialOrder lists the cells along a Morton (Z) curve, so that
+/// consecutive slots, and hence the slot tiles of the threaded step, are compact patches.
 class CellGrid final : public BroadPhase {
 public:
     const char* name() const noexcept override { return "cell_grid"; }
@@ -67,9 +74,10 @@ private:
     void bin(const model::ParticleStore& s, Real margin);
     Real m_cell = 1, m_x0 = 0, m_y0 = 0;
     std::int64_t m_nx = 1, m_ny = 1;
-    std::vector<std::uint32_t> m_cellStart;  ///< size cells + 1
-    std::vector<std::uint32_t> m_sorted;     ///< slots grouped by cell
-    std::vector<std::uint32_t> m_cellOf;     ///< cell of each slot
+    std::vector<std::uint32_t> m_cellStart;                ///< size cells + 1
+    std::vector<std::uint32_t> m_sorted;                   ///< slots grouped by cell
+    std::vector<std::uint32_t> m_cellOf;                   ///< cell of each slot
+    std::vector<std::vector<std::uint64_t>> m_blockPairs;  ///< pairs found by each block of slots
 };
 
 /// Incremental sort-and-sweep on bounding boxes (gc2d spec section 5.2): endpoint lists kept

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
-// Cell-grid broad phase (counting sort into square cells of size 2 r_max + margin).
+// Cell-grid broad phase (counting sort into square cells of size 2 r_max + margin), its pair search
+// on threads, and the Morton order of the slots.
 #include <algorithm>
 #include <cmath>
 
+#include "core/parallel.hpp"
 #include "dem/broad_phase.hpp"
 #include "geom/segment.hpp"
 
@@ -54,26 +56,41 @@ void CellGrid::findPairs(const model::ParticleStore& s, Real margin, std::vector
     out.clear();
     bin(s, margin);
     const std::size_t n = s.size();
-    std::vector<std::uint32_t> near;
-    for (std::size_t i = 0; i < n; ++i) {
-        near.clear();
-        const std::int64_t c = m_cellOf[i];
-        const std::int64_t cx = c % m_nx, cy = c / m_nx;
-        const Real xi = s.x[i], yi = s.y[i], ri = s.radius[i];
-        for (std::int64_t y = std::max<std::int64_t>(cy - 1, 0); y <= std::min(cy + 1, m_ny - 1); ++y)
-            for (std::int64_t x = std::max<std::int64_t>(cx - 1, 0); x <= std::min(cx + 1, m_nx - 1); ++x) {
-                const std::size_t cell = static_cast<std::size_t>(y * m_nx + x);
-                for (std::uint32_t k = m_cellStart[cell]; k < m_cellStart[cell + 1]; ++k) {
-                    const std::uint32_t j = m_sorted[k];
-                    if (j <= i) continue;
-                    const Real dx = s.x[j] - xi, dy = s.y[j] - yi;
-                    const Real reach = ri + s.radius[j] + margin;
-                    if (dx * dx + dy * dy < reach * reach) near.push_back(j);
+    const std::size_t blocks = blockCount(m_threads, n);
+    if (m_blockPairs.size() < blocks) m_blockPairs.resize(blocks);
+    // Each block lists the pairs of its slots i in ascending (i, j): the blocks, concatenated in
+    // order, give the sorted list whatever their number.
+    parallelBlocks(m_threads, n, [&](std::size_t begin, std::size_t end, std::size_t block) {
+        std::vector<std::uint64_t>& found = blocks > 1 ? m_blockPairs[block] : out;
+        found.clear();
+        std::vector<std::uint32_t> near;
+        for (std::size_t i = begin; i < end; ++i) {
+            near.clear();
+            const std::int64_t c = m_cellOf[i];
+            const std::int64_t cx = c % m_nx, cy = c / m_nx;
+            const Real xi = s.x[i], yi = s.y[i], ri = s.radius[i];
+            for (std::int64_t y = std::max<std::int64_t>(cy - 1, 0); y <= std::min(cy + 1, m_ny - 1); ++y)
+                for (std::int64_t x = std::max<std::int64_t>(cx - 1, 0); x <= std::min(cx + 1, m_nx - 1);
+                     ++x) {
+                    const std::size_t cell = static_cast<std::size_t>(y * m_nx + x);
+                    for (std::uint32_t k = m_cellStart[cell]; k < m_cellStart[cell + 1]; ++k) {
+                        const std::uint32_t j = m_sorted[k];
+                        if (j <= i) continue;
+                        const Real dx = s.x[j] - xi, dy = s.y[j] - yi;
+                        const Real reach = ri + s.radius[j] + margin;
+                        if (dx * dx + dy * dy < reach * reach) near.push_back(j);
+                    }
                 }
-            }
-        std::sort(near.begin(), near.end());
-        for (std::uint32_t j : near) out.push_back(pairKey(static_cast<std::uint32_t>(i), j));
-    }
+            std::sort(near.begin(), near.end());
+            for (std::uint32_t j : near) found.push_back(pairKey(static_cast<std::uint32_t>(i), j));
+        }
+    });
+    if (blocks <= 1) return;
+    std::size_t total = 0;
+    for (std::size_t b = 0; b < blocks; ++b) total += m_blockPairs[b].size();
+    out.reserve(total);
+    for (std::size_t b = 0; b < blocks; ++b)
+        out.insert(out.end(), m_blockPairs[b].begin(), m_blockPairs[b].end());
 }
 
 void CellGrid::findWallPairs(const model::ParticleStore& s, const model::WallSet& walls, Real margin,
@@ -112,9 +129,36 @@ void CellGrid::findWallPairs(const model::ParticleStore& s, const model::WallSet
     std::sort(out.begin(), out.end());
 }
 
+namespace {
+/// Morton (Z-order) code of the cell (x, y): the bits of x and y interleaved.
+std::uint64_t mortonCode(std::uint32_t x, std::uint32_t y) noexcept {
+    const auto spread = [](std::uint64_t v) {
+        v &= 0xFFFFFFFFu;
+        v = (v | (v << 16)) & 0x0000FFFF0000FFFFull;
+        v = (v | (v << 8)) & 0x00FF00FF00FF00FFull;
+        v = (v | (v << 4)) & 0x0F0F0F0F0F0F0F0Full;
+        v = (v | (v << 2)) & 0x3333333333333333ull;
+        v = (v | (v << 1)) & 0x5555555555555555ull;
+        return v;
+    };
+    return spread(x) | (spread(y) << 1);
+}
+}  // namespace
+
 std::vector<std::uint32_t> CellGrid::spatialOrder(const model::ParticleStore& s) {
     bin(s, 0);
-    return m_sorted;
+    const std::size_t cells = m_cellStart.size() - 1;
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> byCode(cells);
+    for (std::size_t c = 0; c < cells; ++c)
+        byCode[c] = {mortonCode(static_cast<std::uint32_t>(static_cast<std::int64_t>(c) % m_nx),
+                                static_cast<std::uint32_t>(static_cast<std::int64_t>(c) / m_nx)),
+                     static_cast<std::uint32_t>(c)};
+    std::sort(byCode.begin(), byCode.end());
+    std::vector<std::uint32_t> order;
+    order.reserve(s.size());
+    for (const auto& [code, c] : byCode)
+        order.insert(order.end(), m_sorted.begin() + m_cellStart[c], m_sorted.begin() + m_cellStart[c + 1]);
+    return order;
 }
 
 std::size_t CellGrid::memoryBytes() const noexcept {

@@ -35,7 +35,7 @@ Real areaEnergy(const model::ParticleStore& s, const model::WallSet& walls, cons
         Real l;
         if (wall) {
             const auto& seg = walls.segments[cl.second[p]];
-            g = area::wallGeometry(s, sc, walls, i, cl.second[p], cache);
+            g = area::wallGeometry(s, sc, walls, i, cl.second[p], cache, sc.featureStats);
             otherMat = seg.material;
             l = kPotential ? s.radius[i] : norm(g.point - Vec2{s.x[i], s.y[i]});
             if (!kPotential && walls.walls[seg.wall].body) {  // r_j from the body's centroid, as in the force
@@ -44,7 +44,7 @@ Real areaEnergy(const model::ParticleStore& s, const model::WallSet& walls, cons
             }
         } else {
             const std::uint32_t j = cl.second[p];
-            g = area::pairGeometry(s, sc, i, j, cache);
+            g = area::pairGeometry(s, sc, i, j, cache, sc.featureStats);
             otherMat = s.material[j];
             const Real ri = kPotential ? s.radius[i] : norm(g.point - Vec2{s.x[i], s.y[i]});
             const Real rj = kPotential ? s.radius[j] : norm(g.point - Vec2{s.x[j], s.y[j]});

@@ -3,8 +3,11 @@
 // damping, pull springs of gc2d spec section 3.8), then the contact kernels of every bucket of pairs.
 // Why this shape: the law form is dispatched once per bucket (std::visit over the three axis
 // variants, dem/forces_detail.hpp), the loop body is a template with the law inlined; parameters of
-// a material pair are read from the LawTable with the alternative known at compile time. Pairs are
-// processed in list order, so the floating-point summation order is fixed. The kernels are headers
+// a material pair are read from the LawTable with the alternative known at compile time. Threads
+// take whole slot tiles (dem/slot_tiles.hpp): a tile's grains get their body forces, then the
+// pairs of the tile in list order; the share of a cross pair for a grain of another tile is
+// deferred and gathered afterwards in a fixed order, so the floating-point summation order is
+// the same for any thread count (docs/physics/dem-threads.md). The kernels are headers
 // included here only, so that they are compiled and inlined in this translation unit.
 #include "dem/forces.hpp"
 
@@ -13,6 +16,7 @@
 #include <type_traits>
 
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 #include "dem/forces_area_pairs.hpp"
 #include "dem/forces_depth.hpp"
 #include "dem/forces_detail.hpp"
@@ -22,71 +26,166 @@ namespace granulab::dem {
 using detail::kAreaForm;
 using detail::kDepthForm;
 
-void computeForces(model::ParticleStore& s, const model::WallSet& walls, NeighborList& list,
-                   const LawTable& laws, const BodyForces& body, const DriftVelocities& drift, Real dt,
-                   bool trialHistory, ForceStats& stats, std::vector<Vec2>& wallForce, ShapeContext& shapes,
-                   ContactLog* log) noexcept {
-    GL_ASSERT(wallForce.size() == walls.walls.size(), "one force per wall");
-    const std::size_t n = s.size();
+namespace {
+
+/// Body forces of the slots [begin, end): weight and global viscous damping (overwrites f, torque).
+void bodyForces(model::ParticleStore& s, const BodyForces& body, std::uint32_t begin,
+                std::uint32_t end) noexcept {
     const Vec2 weightG = body.weight ? body.gravity : Vec2{};
-    for (std::size_t i = 0; i < n; ++i) {
+    for (std::uint32_t i = begin; i < end; ++i) {
         s.fx[i] = s.mass[i] * weightG.x - body.gamma * s.vx[i];
         s.fy[i] = s.mass[i] * weightG.y - body.gamma * s.vy[i];
         s.torque[i] = -body.gammaRotation * s.omega[i];
     }
-    if (body.springs)
-        for (const PullSpring& sp : *body.springs) {  // gc2d spec section 3.8
-            const std::uint32_t i = sp.slot;
-            GL_ASSERT(i < n, "spring slot in range");
-            const Real c = std::cos(s.angle[i]), sn = std::sin(s.angle[i]);
-            const Vec2 arm{c * sp.attach.x - sn * sp.attach.y, sn * sp.attach.x + c * sp.attach.y};
-            const Vec2 f = (sp.freeEnd(body.time) - (Vec2{s.x[i], s.y[i]} + arm)) * sp.stiffness;
-            s.fx[i] += f.x;
-            s.fy[i] += f.y;
-            s.torque[i] += cross(arm, f);
-        }
-    stats = ForceStats{};
-    if (log) log->records.clear();
-    for (auto& w : wallForce) w = Vec2{};
-    if (trialHistory) {  // every evaluation of a step starts from the accepted history
-        for (auto* l : {&list.pairs, &list.wallPairs}) {
-            std::copy(l->xi.begin(), l->xi.end(), l->xiTrial.begin());
-            std::copy(l->zeta.begin(), l->zeta.end(), l->zetaTrial.begin());
-            std::copy(l->areaOld.begin(), l->areaOld.end(), l->areaOldTrial.begin());
-        }
+}
+
+/// Pull springs (gc2d spec section 3.8) of the particles in the slots [begin, end), in spring order.
+void springForces(model::ParticleStore& s, const BodyForces& body, std::uint32_t begin,
+                  std::uint32_t end) noexcept {
+    if (!body.springs) return;
+    for (const PullSpring& sp : *body.springs) {
+        const std::uint32_t i = sp.slot;
+        GL_ASSERT(i < s.size(), "spring slot in range");
+        if (i < begin || i >= end) continue;
+        const Real c = std::cos(s.angle[i]), sn = std::sin(s.angle[i]);
+        const Vec2 arm{c * sp.attach.x - sn * sp.attach.y, sn * sp.attach.x + c * sp.attach.y};
+        const Vec2 f = (sp.freeEnd(body.time) - (Vec2{s.x[i], s.y[i]} + arm)) * sp.stiffness;
+        s.fx[i] += f.x;
+        s.fy[i] += f.y;
+        s.torque[i] += cross(arm, f);
     }
-    shapes.update(s);
+}
+
+/// Copies the accepted history of the entries [begin, end) to the trial columns.
+void startTrial(ContactList& l, std::uint32_t begin, std::uint32_t end) noexcept {
+    std::copy(l.xi.begin() + begin, l.xi.begin() + end, l.xiTrial.begin() + begin);
+    if (!l.zeta.empty()) std::copy(l.zeta.begin() + begin, l.zeta.begin() + end, l.zetaTrial.begin() + begin);
+    if (!l.areaOld.empty())
+        std::copy(l.areaOld.begin() + begin, l.areaOld.begin() + end, l.areaOldTrial.begin() + begin);
+}
+
+/// Everything tile t adds: body forces and springs of its grains, then its inner pairs, its cross
+/// pairs (their second grain's share deferred) and its wall pairs, bucket by bucket.
+void tileForces(std::uint32_t t, model::ParticleStore& s, const model::WallSet& walls, NeighborList& list,
+                const LawTable& laws, const BodyForces& body, const DriftVelocities& drift, Real dt,
+                bool trialHistory, const ShapeContext& shapes, ForceWorkspace& ws, bool logging) noexcept {
+    const std::uint32_t first = list.tiles.begin(t), last = list.tiles.end(t);
+    bodyForces(s, body, first, last);
+    springForces(s, body, first, last);
+    ForceStats& stats = ws.tileStats[t];
+    stats = ForceStats{};
+    geom::FeatureStats& features = ws.tileFeatures[t];
+    ContactLog* log = logging ? &ws.tileLogs[t] : nullptr;
+    if (log) log->records.clear();
+    Vec2* wallForce = ws.tileWallForce.data() + static_cast<std::size_t>(t) * walls.walls.size();
+    std::fill(wallForce, wallForce + walls.walls.size(), Vec2{});
+    if (trialHistory) {  // every evaluation of a step starts from the accepted history
+        startTrial(list.pairs, list.tileBegin(list.pairs, t), list.tileBegin(list.pairs, t + 1));
+        startTrial(list.wallPairs, list.tileBegin(list.wallPairs, t), list.tileBegin(list.wallPairs, t + 1));
+    }
+    DeferredForce* deferred = ws.deferred.data() + list.crossBase[t];
+    const std::uint32_t crossBegin = list.crossBegin(t);
     if (body.particleContacts)
-        detail::forEachBucket(
-            list.pairs, laws, [&](auto* nT, auto* dT, auto* tT, std::uint32_t b, std::uint32_t e) {
-                using N = std::remove_pointer_t<decltype(nT)>;
-                using D = std::remove_pointer_t<decltype(dT)>;
-                using T = std::remove_pointer_t<decltype(tT)>;
-                if constexpr (kAreaForm<N, D, T>) {
-                    detail::areaPairs<N, D, T>(s, list.pairs, b, e, laws, drift, dt, trialHistory, stats,
-                                               shapes, log);
-                } else if constexpr (kDepthForm<N, D, T>) {
-                    if (laws.hasRolling())
-                        detail::diskPairs<N, D, T, true>(s, list.pairs, b, e, laws, drift, dt,
-                                                         body.overlapGuard, trialHistory, stats, log);
+        for (const bool cross : {false, true})
+            detail::forEachBucketIn(
+                list.pairs, laws, list.bucket(t, cross, 0), list.bucket(t, cross, 0) + list.forms,
+                [&](auto* nT, auto* dT, auto* tT, std::uint32_t b, std::uint32_t e) {
+                    using N = std::remove_pointer_t<decltype(nT)>;
+                    using D = std::remove_pointer_t<decltype(dT)>;
+                    using T = std::remove_pointer_t<decltype(tT)>;
+                    const auto run = [&](auto crossTag) {
+                        constexpr bool kCross = decltype(crossTag)::value;
+                        if constexpr (kAreaForm<N, D, T>) {
+                            detail::areaPairs<N, D, T, kCross>(s, list.pairs, b, e, laws, drift, dt,
+                                                               trialHistory, stats, shapes, features, log,
+                                                               deferred, crossBegin);
+                        } else if constexpr (kDepthForm<N, D, T>) {
+                            if (laws.hasRolling())
+                                detail::diskPairs<N, D, T, true, kCross>(s, list.pairs, b, e, laws, drift, dt,
+                                                                         body.overlapGuard, trialHistory,
+                                                                         stats, log, deferred, crossBegin);
+                            else
+                                detail::diskPairs<N, D, T, false, kCross>(s, list.pairs, b, e, laws, drift,
+                                                                          dt, body.overlapGuard, trialHistory,
+                                                                          stats, log, deferred, crossBegin);
+                        }
+                    };
+                    if (cross)
+                        run(std::true_type{});
                     else
-                        detail::diskPairs<N, D, T, false>(s, list.pairs, b, e, laws, drift, dt,
-                                                          body.overlapGuard, trialHistory, stats, log);
-                }
-            });
+                        run(std::false_type{});
+                });
     if (body.wallContacts)
-        detail::forEachBucket(
-            list.wallPairs, laws, [&](auto* nT, auto* dT, auto* tT, std::uint32_t b, std::uint32_t e) {
+        detail::forEachBucketIn(
+            list.wallPairs, laws, list.bucket(t, false, 0), list.bucket(t, false, 0) + list.forms,
+            [&](auto* nT, auto* dT, auto* tT, std::uint32_t b, std::uint32_t e) {
                 using N = std::remove_pointer_t<decltype(nT)>;
                 using D = std::remove_pointer_t<decltype(dT)>;
                 using T = std::remove_pointer_t<decltype(tT)>;
                 if constexpr (kAreaForm<N, D, T>)
                     detail::areaWalls<N, D, T>(s, walls, list.wallPairs, b, e, laws, drift, dt, trialHistory,
-                                               stats, wallForce, shapes, log);
+                                               stats, wallForce, shapes, features, log);
                 else if constexpr (kDepthForm<N, D, T>)
                     detail::diskWalls<N, D, T>(s, walls, list.wallPairs, b, e, laws, drift, dt, trialHistory,
                                                stats, wallForce, log);
             });
+}
+
+/// Adds the deferred shares of the cross pairs to the grains of tile t, in gather order.
+void gatherDeferred(std::uint32_t t, model::ParticleStore& s, const NeighborList& list,
+                    const ForceWorkspace& ws) noexcept {
+    for (std::uint32_t k = list.gatherStart[t]; k < list.gatherStart[t + 1]; ++k) {
+        const DeferredForce& d = ws.deferred[list.gatherFrom[k]];
+        const std::uint32_t j = list.gatherSlot[k];
+        s.fx[j] += d.fx;
+        s.fy[j] += d.fy;
+        s.torque[j] += d.torque;
+    }
+}
+
+}  // namespace
+
+void computeForces(model::ParticleStore& s, const model::WallSet& walls, NeighborList& list,
+                   const LawTable& laws, const BodyForces& body, const DriftVelocities& drift, Real dt,
+                   bool trialHistory, ForceStats& stats, std::vector<Vec2>& wallForce, ShapeContext& shapes,
+                   ContactLog* log, ForceWorkspace* workspace) noexcept {
+    GL_ASSERT(wallForce.size() == walls.walls.size(), "one force per wall");
+    GL_ASSERT(list.tiles.slots == s.size(), "the list's tiles cover the store");
+    ForceWorkspace local;
+    ForceWorkspace& ws = workspace ? *workspace : local;
+    const std::uint32_t tiles = list.tiles.count;
+    const std::size_t nWalls = walls.walls.size();
+    // Sized only when the tiles, the walls or the cross pairs grow (no allocation in steady state).
+    ws.deferred.resize(list.crossPairs());
+    ws.tileStats.resize(tiles);
+    ws.tileFeatures.resize(tiles);
+    ws.tileWallForce.resize(static_cast<std::size_t>(tiles) * nWalls);
+    if (log && ws.tileLogs.size() < tiles) ws.tileLogs.resize(tiles);
+    shapes.update(s, ws.threads);
+    parallelFor(ws.threads, tiles, [&](std::size_t t) {
+        tileForces(static_cast<std::uint32_t>(t), s, walls, list, laws, body, drift, dt, trialHistory, shapes,
+                   ws, log != nullptr);
+    });
+    if (list.crossPairs() > 0)
+        parallelFor(ws.threads, tiles,
+                    [&](std::size_t t) { gatherDeferred(static_cast<std::uint32_t>(t), s, list, ws); });
+    // Sums over tiles in tile order: the same for any thread count.
+    stats = ForceStats{};
+    for (auto& w : wallForce) w = Vec2{};
+    if (log) log->records.clear();
+    for (std::uint32_t t = 0; t < tiles; ++t) {
+        stats.add(ws.tileStats[t]);
+        for (std::size_t w = 0; w < nWalls; ++w) wallForce[w] += ws.tileWallForce[t * nWalls + w];
+        geom::FeatureStats& f = ws.tileFeatures[t];
+        shapes.featureStats.evaluations += f.evaluations;
+        shapes.featureStats.iterations += f.iterations;
+        shapes.featureStats.coldStarts += f.coldStarts;
+        shapes.featureStats.fullClips += f.fullClips;
+        f = geom::FeatureStats{};
+        if (log)
+            log->records.insert(log->records.end(), ws.tileLogs[t].records.begin(),
+                                ws.tileLogs[t].records.end());
+    }
 }
 
 }  // namespace granulab::dem

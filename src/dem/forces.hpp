@@ -58,8 +58,8 @@ struct ShapeContext {
     bool anyPolygon = false;
     Real scale = 1;  ///< global size scaling s(t) of the body corners (gc2d 2.4, Eq. 2.30/2.31)
     /// Recomputes the world corners from positions, angles and the scale s (gc2d Eq. 2.35, angle
-    /// counter-clockwise); dem/shape_context.cpp.
-    void update(const model::ParticleStore& s);
+    /// counter-clockwise), on `threads` threads; dem/shape_context.cpp.
+    void update(const model::ParticleStore& s, int threads = 1);
 };
 
 struct ForceStats {
@@ -67,6 +67,30 @@ struct ForceStats {
     std::uint64_t wallContacts = 0;  ///< touching particle-segment pairs
     Real maxRelativeOverlap = 0;     ///< largest overlap / smaller radius of the contact
     std::uint64_t guardSkips = 0;    ///< particle pairs skipped by the overlap guard
+    void add(const ForceStats& o) noexcept {
+        contacts += o.contacts;
+        wallContacts += o.wallContacts;
+        maxRelativeOverlap =
+            o.maxRelativeOverlap > maxRelativeOverlap ? o.maxRelativeOverlap : maxRelativeOverlap;
+        guardSkips += o.guardSkips;
+    }
+};
+
+/// The share of a cross pair (its grains in two tiles) for its second grain, gathered by that
+/// grain's tile after all tiles have run (dem/neighbor_list.hpp).
+struct DeferredForce {
+    Real fx, fy;  ///< [N]
+    Real torque;  ///< [N m]
+};
+
+/// Scratch of the threaded force evaluation, kept between steps (sized when the tiles change).
+struct ForceWorkspace {
+    int threads = 1;                      ///< threads of the evaluation
+    std::vector<DeferredForce> deferred;  ///< one per cross pair
+    std::vector<ForceStats> tileStats;
+    std::vector<Vec2> tileWallForce;  ///< tiles x walls [N]
+    std::vector<geom::FeatureStats> tileFeatures;
+    std::vector<ContactLog> tileLogs;  ///< filled on the steps that record contacts
 };
 
 /// Overwrites f and torque with body forces, then adds all contact forces. Updates the
@@ -77,11 +101,15 @@ struct ForceStats {
 /// writes: f, torque, list histories (and feature caches), stats, shapes (world corners),
 /// wallForce[w] = total contact force [N] the particles exert on wall w (size = wall count).
 /// `shapes`: polygon shapes (contacts of the gc2d area law; may be empty for disk-only scenes).
-/// `log`: when given, cleared and filled with every touching contact's record (snapshot steps).
+/// `log`: when given, cleared and filled with every touching contact's record (snapshot steps),
+/// tile by tile. `ws`: the scratch and thread count (nullptr: a local one, one thread).
+/// The result does not depend on ws->threads: every grain's forces are added in the order fixed
+/// by the list's tiles (body forces, springs, then its tile's pairs and walls in list order, then
+/// the deferred shares of cross pairs in gather order).
 void computeForces(model::ParticleStore& s, const model::WallSet& walls, NeighborList& list,
                    const LawTable& laws, const BodyForces& body, const DriftVelocities& drift, Real dt,
                    bool trialHistory, ForceStats& stats, std::vector<Vec2>& wallForce, ShapeContext& shapes,
-                   ContactLog* log = nullptr) noexcept;
+                   ContactLog* log = nullptr, ForceWorkspace* ws = nullptr) noexcept;
 
 /// Elastic energy [J] stored in all contacts (normal, tangential and rolling springs); no side effects.
 /// For the gc2d area law, whose force has no potential in general, the normal part is estimated

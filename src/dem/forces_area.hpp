@@ -33,12 +33,12 @@ inline geom::PolygonFrame frameOf(const model::ParticleStore& s, const ShapeCont
 }
 
 /// Geometry of the pair (i, j), normal pushing i away from j.
-inline geom::AreaContact pairGeometry(const model::ParticleStore& s, ShapeContext& sc, std::uint32_t i,
-                                      std::uint32_t j, geom::FeatureCache& cache) noexcept {
+inline geom::AreaContact pairGeometry(const model::ParticleStore& s, const ShapeContext& sc, std::uint32_t i,
+                                      std::uint32_t j, geom::FeatureCache& cache,
+                                      geom::FeatureStats& features) noexcept {
     const bool pi = s.shape[i] != model::kDiskShape, pj = s.shape[j] != model::kDiskShape;
     const Vec2 ci{s.x[i], s.y[i]}, cj{s.x[j], s.y[j]};
-    if (pi && pj)
-        return geom::trackPolygonContact(frameOf(s, sc, i), frameOf(s, sc, j), cache, sc.featureStats);
+    if (pi && pj) return geom::trackPolygonContact(frameOf(s, sc, i), frameOf(s, sc, j), cache, features);
     if (!pi && !pj) return geom::circleCircleContact(ci, s.radius[i], cj, s.radius[j]);
     if (!pi) {
         const auto f = frameOf(s, sc, j);
@@ -74,11 +74,12 @@ inline void wallQuad(Vec2 a, Vec2 b, Vec2 from, Real thickness, WallQuad& q) noe
 /// Geometry of particle i (polygon or disk) against an immovable convex polygon `wall` (world
 /// corners counter-clockwise), normal pushing i away from the wall; pull and twist (the area
 /// gradient of i, for area_potential) as for a particle pair.
-inline geom::AreaContact particleWallGeometry(const model::ParticleStore& s, ShapeContext& sc,
+inline geom::AreaContact particleWallGeometry(const model::ParticleStore& s, const ShapeContext& sc,
                                               std::uint32_t i, const geom::PolygonFrame& wall,
-                                              geom::FeatureCache& cache) noexcept {
+                                              geom::FeatureCache& cache,
+                                              geom::FeatureStats& features) noexcept {
     if (s.shape[i] != model::kDiskShape)
-        return geom::trackPolygonContact(frameOf(s, sc, i), wall, cache, sc.featureStats);
+        return geom::trackPolygonContact(frameOf(s, sc, i), wall, cache, features);
     return geom::circlePolygonContact({s.x[i], s.y[i]}, s.radius[i], wall.corners, wall.n);
 }
 
@@ -86,9 +87,9 @@ inline geom::AreaContact particleWallGeometry(const model::ParticleStore& s, Sha
 /// wall: a convex body wall is one immovable polygon (gc2d spec 3.7, one contact per grain); a
 /// polyline segment acts as the plate of thickness 2 r behind it. Not touching for a wall that is
 /// not solid (an outlet's lid after it opened).
-inline geom::AreaContact wallGeometry(const model::ParticleStore& s, ShapeContext& sc,
+inline geom::AreaContact wallGeometry(const model::ParticleStore& s, const ShapeContext& sc,
                                       const model::WallSet& walls, std::uint32_t i, std::uint32_t segIndex,
-                                      geom::FeatureCache& cache) noexcept {
+                                      geom::FeatureCache& cache, geom::FeatureStats& features) noexcept {
     const auto& seg = walls.segments[segIndex];
     const model::Wall& wall = walls.walls[seg.wall];
     if (!wall.solid) return {};
@@ -98,11 +99,11 @@ inline geom::AreaContact wallGeometry(const model::ParticleStore& s, ShapeContex
         body.n = static_cast<int>(wall.segmentCount);
         body.centre = walls.bodyCentroid[seg.wall];
         body.inradius = walls.bodyInradius[seg.wall];
-        return particleWallGeometry(s, sc, i, body, cache);
+        return particleWallGeometry(s, sc, i, body, cache, features);
     }
     WallQuad quad;
     wallQuad(seg.a, seg.b, {s.x[i], s.y[i]}, 2 * s.radius[i], quad);
-    return particleWallGeometry(s, sc, i, quad.frame, cache);
+    return particleWallGeometry(s, sc, i, quad.frame, cache, features);
 }
 
 /// Everything the gc2d law needs about one contact; j may be a wall (infinite mass).

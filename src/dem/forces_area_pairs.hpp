@@ -30,10 +30,13 @@ inline void assertAreaBucket([[maybe_unused]] const ContactList& list, [[maybe_u
 }
 
 /// gc2d area contacts of one bucket of particle pairs (any shapes); N: AreaNormal or AreaPotentialNormal.
-template <class N, class D, class T>
+/// kCross: a cross bucket (j in another tile): j's share goes to deferred[p - crossBegin] (zero
+/// when not touching) instead of j's sums. `features`: the closest-feature work of this tile.
+template <class N, class D, class T, bool kCross>
 void areaPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, std::uint32_t end,
                const LawTable& laws, const DriftVelocities& drift, Real dt, bool trialHistory,
-               ForceStats& stats, ShapeContext& sc, ContactLog* log) noexcept {
+               ForceStats& stats, const ShapeContext& sc, geom::FeatureStats& features, ContactLog* log,
+               DeferredForce* deferred, std::uint32_t crossBegin) noexcept {
     const std::uint32_t nm = laws.materialCount();
     const ContactLaw* table = laws.laws().data();
     Real* xiHist = trialHistory ? list.xiTrial.data() : list.xi.data();
@@ -79,14 +82,15 @@ void areaPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
                               *std::get_if<T>(&law.tangential), c, dt, invDt, xiHist[q.p], areaHist[q.p]);
             s.fx[i] += f.onI.x;
             s.fy[i] += f.onI.y;
-            s.fx[j] -= f.onI.x;
-            s.fy[j] -= f.onI.y;
-            if constexpr (std::is_same_v<N, AreaPotentialNormal>) {
-                s.torque[i] += cross(c.ri, f.onI) + f.couple;
-                s.torque[j] -= cross(c.rj, f.onI) + f.couple;
+            constexpr bool kCouple = std::is_same_v<N, AreaPotentialNormal>;
+            s.torque[i] += kCouple ? cross(c.ri, f.onI) + f.couple : cross(c.ri, f.onI);
+            const Real torqueJ = kCouple ? cross(c.rj, f.onI) + f.couple : cross(c.rj, f.onI);
+            if constexpr (kCross) {
+                deferred[q.p - crossBegin] = {-f.onI.x, -f.onI.y, -torqueJ};
             } else {
-                s.torque[i] += cross(c.ri, f.onI);
-                s.torque[j] -= cross(c.rj, f.onI);
+                s.fx[j] -= f.onI.x;
+                s.fy[j] -= f.onI.y;
+                s.torque[j] -= torqueJ;
             }
             if (log)  // normal from i toward j: the geometry's normal pushes i away from j
                 log->addArea(s.id[i], s.id[j], -1, c.g.point, -c.g.normal, f.onI, f.overlapDepth, c.g.area,
@@ -104,13 +108,15 @@ void areaPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
         if (dx * dx + dy * dy >= rsum * rsum) {  // bounding circles apart: no contact possible
             xiHist[p] = 0;
             areaHist[p] = 0;
+            if constexpr (kCross) deferred[p - crossBegin] = {0, 0, 0};
             continue;
         }
         Pending& q = batch[pending];
-        q.g = area::pairGeometry(s, sc, i, j, list.features[p]);
+        q.g = area::pairGeometry(s, sc, i, j, list.features[p], features);
         if (!q.g.touching) {
             xiHist[p] = 0;
             areaHist[p] = 0;
+            if constexpr (kCross) deferred[p - crossBegin] = {0, 0, 0};
             continue;
         }
         ++contacts;
@@ -128,14 +134,13 @@ void areaPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
 template <class N, class D, class T>
 void areaWalls(model::ParticleStore& s, const model::WallSet& walls, ContactList& list, std::uint32_t begin,
                std::uint32_t end, const LawTable& laws, const DriftVelocities& drift, Real dt,
-               bool trialHistory, ForceStats& stats, std::vector<Vec2>& wallForce, ShapeContext& sc,
-               ContactLog* log) noexcept {
+               bool trialHistory, ForceStats& stats, Vec2* wallForce, const ShapeContext& sc,
+               geom::FeatureStats& features, ContactLog* log) noexcept {
     const std::uint32_t nm = laws.materialCount();
     const ContactLaw* table = laws.laws().data();
     Real* xiHist = trialHistory ? list.xiTrial.data() : list.xi.data();
     Real* areaHist = trialHistory ? list.areaOldTrial.data() : list.areaOld.data();
     assertAreaBucket(list, begin, end, trialHistory);
-    GL_ASSERT(wallForce.size() == walls.walls.size(), "one force per wall");
     std::uint64_t contacts = 0;
     for (std::uint32_t p = begin; p < end; ++p) {
         const std::uint32_t i = list.first[p];
@@ -144,7 +149,7 @@ void areaWalls(model::ParticleStore& s, const model::WallSet& walls, ContactList
         const Vec2 xi{s.x[i], s.y[i]};
         area::AreaPair c;
         c.wall = true;
-        c.g = area::wallGeometry(s, sc, walls, i, list.second[p], list.features[p]);
+        c.g = area::wallGeometry(s, sc, walls, i, list.second[p], list.features[p], features);
         if (!c.g.touching) {
             xiHist[p] = 0;
             areaHist[p] = 0;

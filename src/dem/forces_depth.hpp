@@ -22,10 +22,13 @@ namespace {
 
 /// Disk-disk contacts of one bucket. n points from i to j; t = perp(n).
 /// kRolling: some law of the scene has rolling resistance (LawTable::hasRolling).
-template <class N, class D, class T, bool kRolling>
+/// kCross: a cross bucket (j in another tile): j's share goes to deferred[p - crossBegin] (zero
+/// when not touching) instead of j's sums, which belong to another thread.
+template <class N, class D, class T, bool kRolling, bool kCross>
 void diskPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, std::uint32_t end,
                const LawTable& laws, const DriftVelocities& drift, Real dt, Real overlapGuard,
-               bool trialHistory, ForceStats& stats, ContactLog* log) noexcept {
+               bool trialHistory, ForceStats& stats, ContactLog* log, DeferredForce* deferred,
+               std::uint32_t crossBegin) noexcept {
     const std::uint32_t nm = laws.materialCount();
     const ContactLaw* table = laws.laws().data();
     const Real* __restrict x = s.x.data();
@@ -63,6 +66,7 @@ void diskPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
         if (r2 >= rsum * rsum) {
             xiHist[p] = 0;
             if (rolling) zetaHist[p] = 0;
+            if constexpr (kCross) deferred[p - crossBegin] = {0, 0, 0};
             continue;
         }
         ++contacts;
@@ -75,6 +79,7 @@ void diskPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
             ++stats.guardSkips;  // history kept as it is; the overlap still counts for the diagnosis
             const Real rel = overlap / (ri < rj ? ri : rj);
             maxRel = rel > maxRel ? rel : maxRel;
+            if constexpr (kCross) deferred[p - crossBegin] = {0, 0, 0};
             continue;
         }
         // Relative velocity of i's contact point w.r.t. j's: v_i - v_j + (w_i r_i + w_j r_j) perp(n).
@@ -107,17 +112,21 @@ void diskPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
         if constexpr (kRolling) {
             zetaHist[p] = zeta;
             tq[i] += f.rollingTorque;
-            tq[j] -= f.rollingTorque;
+            if constexpr (!kCross) tq[j] -= f.rollingTorque;
         }
         // Force on i: -fn n + ft t.
         const Real fxi = -f.fn * nx - f.ft * ny;
         const Real fyi = -f.fn * ny + f.ft * nx;
         fx[i] += fxi;
         fy[i] += fyi;
-        fx[j] -= fxi;
-        fy[j] -= fyi;
         tq[i] += ri * f.ft;  // arm r_i n, force component ft along perp(n)
-        tq[j] += rj * f.ft;
+        if constexpr (kCross) {
+            deferred[p - crossBegin] = {-fxi, -fyi, kRolling ? rj * f.ft - f.rollingTorque : rj * f.ft};
+        } else {
+            fx[j] -= fxi;
+            fy[j] -= fyi;
+            tq[j] += rj * f.ft;
+        }
         if (log) log->addDiskPair(s.id[i], s.id[j], {x[i], y[i]}, ri, {x[j], y[j]}, rj, {nx, ny}, {fxi, fyi});
         const Real rel = overlap / (ri < rj ? ri : rj);
         maxRel = rel > maxRel ? rel : maxRel;
@@ -130,13 +139,12 @@ void diskPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
 template <class N, class D, class T>
 void diskWalls(model::ParticleStore& s, const model::WallSet& walls, ContactList& list, std::uint32_t begin,
                std::uint32_t end, const LawTable& laws, const DriftVelocities& drift, Real dt,
-               bool trialHistory, ForceStats& stats, std::vector<Vec2>& wallForce, ContactLog* log) noexcept {
+               bool trialHistory, ForceStats& stats, Vec2* wallForce, ContactLog* log) noexcept {
     const std::uint32_t nm = laws.materialCount();
     const ContactLaw* table = laws.laws().data();
     GL_ASSERT(begin <= end && end <= list.size() && list.second.size() == list.size(),
               "bucket inside the list");
     GL_ASSERT(!trialHistory || list.xiTrial.size() == list.size(), "trial springs allocated");
-    GL_ASSERT(wallForce.size() == walls.walls.size(), "one force per wall");
     std::uint64_t contacts = 0;
     for (std::uint32_t p = begin; p < end; ++p) {
         const std::uint32_t i = list.first[p];

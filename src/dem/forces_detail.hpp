@@ -6,6 +6,7 @@
 #pragma once
 #include <cstdint>
 #include <type_traits>
+#include <utility>
 #include <variant>
 
 #include "core/error.hpp"
@@ -38,19 +39,32 @@ void visitForm(const ContactLaw& rep, Fn&& fn) {
         rep.normal, rep.damping, rep.tangential);
 }
 
-/// Calls fn(N*, D*, T*, begin, end) for every non-empty bucket of `list` with the concrete axis
-/// types of the bucket's law form: the one dispatch per bucket.
+/// Calls fn(N*, D*, T*, begin, end) for every non-empty bucket in [firstBucket, endBucket) of
+/// `list` with the concrete axis types of the bucket's law form (bucket mod forms): the one
+/// dispatch per bucket.
 template <class Fn>
-void forEachBucket(const ContactList& list, const LawTable& laws, Fn&& fn) {
-    GL_ASSERT(list.bucketStart.empty() || list.bucketStart.size() == laws.formCount() + std::size_t{1},
-              "one bucket per law form");
+void forEachBucketIn(const ContactList& list, const LawTable& laws, std::uint32_t firstBucket,
+                     std::uint32_t endBucket, Fn&& fn) {
+    const std::uint32_t forms = laws.formCount() > 0 ? laws.formCount() : 1;
+    GL_ASSERT(list.bucketStart.empty() || (list.bucketStart.size() - 1) % (2 * forms) == 0,
+              "tiles x 2 x forms buckets");
     GL_ASSERT(list.bucketStart.empty() || list.bucketStart.back() == list.size(), "buckets cover the list");
-    for (std::uint32_t f = 0; f + 1 < list.bucketStart.size(); ++f) {
-        const auto b = list.bucketStart[f], e = list.bucketStart[f + 1];
+    GL_ASSERT(endBucket < list.bucketStart.size() || firstBucket == endBucket, "buckets inside the list");
+    for (std::uint32_t k = firstBucket; k < endBucket; ++k) {
+        const auto b = list.bucketStart[k], e = list.bucketStart[k + 1];
         if (b == e) continue;
         GL_ASSERT(b < e, "bucket offsets ascending");
-        visitForm(laws.formRepresentative(f), [&](auto* nT, auto* dT, auto* tT) { fn(nT, dT, tT, b, e); });
+        visitForm(laws.formRepresentative(k % forms),
+                  [&](auto* nT, auto* dT, auto* tT) { fn(nT, dT, tT, b, e); });
     }
+}
+
+/// forEachBucketIn over all buckets of `list`.
+template <class Fn>
+void forEachBucket(const ContactList& list, const LawTable& laws, Fn&& fn) {
+    if (list.bucketStart.size() < 2) return;
+    forEachBucketIn(list, laws, 0, static_cast<std::uint32_t>(list.bucketStart.size() - 1),
+                    std::forward<Fn>(fn));
 }
 
 template <class D>

@@ -6,9 +6,11 @@
 #include <algorithm>
 #include <cmath>
 #include <istream>
+#include <limits>
 #include <ostream>
 
 #include "core/binary_io.hpp"
+#include "core/parallel.hpp"
 
 namespace granulab::dem {
 
@@ -43,13 +45,19 @@ struct Dofs {
 };
 
 /// Largest |v| of the store; NaN propagates so that the caller sees a blow-up.
-Real maxSpeed(const model::ParticleStore& s) noexcept {
-    Real maxV2 = 0;
-    for (std::size_t i = 0; i < s.size(); ++i) {
-        const Real v2 = s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i];
-        maxV2 = (v2 > maxV2 || v2 != v2) ? v2 : maxV2;
-    }
-    return std::sqrt(maxV2);
+Real maxSpeed(const model::ParticleStore& s, int threads) noexcept {
+    return std::sqrt(parallelMax(threads, s.size(), [&](std::size_t begin, std::size_t end) {
+        const Real* __restrict vx = s.vx.data();
+        const Real* __restrict vy = s.vy.data();
+        Real maxV2 = 0;
+        bool nonFinite = false;
+        for (std::size_t i = begin; i < end; ++i) {
+            const Real v2 = vx[i] * vx[i] + vy[i] * vy[i];
+            maxV2 = v2 > maxV2 ? v2 : maxV2;
+            nonFinite |= !(v2 == v2);
+        }
+        return nonFinite ? std::numeric_limits<Real>::quiet_NaN() : maxV2;
+    }));
 }
 }  // namespace
 
@@ -59,46 +67,63 @@ Real VelocityVerlet::predict(model::ParticleStore& s, Real dt) noexcept {
     const std::size_t n = s.size();
     m_half.resize(n);  // no-op after the first step
     const Real h = 0.5 * dt;
-    Real* __restrict x = s.x.data();
-    Real* __restrict y = s.y.data();
-    Real* __restrict vx = s.vx.data();
-    Real* __restrict vy = s.vy.data();
-    Real* __restrict a = s.angle.data();
-    Real* __restrict w = s.omega.data();
-    Real* __restrict hvx = m_half[0];
-    Real* __restrict hvy = m_half[1];
-    Real* __restrict hw = m_half[2];
-    const Real* __restrict fx = s.fx.data();
-    const Real* __restrict fy = s.fy.data();
-    const Real* __restrict tq = s.torque.data();
-    const Real* __restrict im = s.invMass.data();
-    const Real* __restrict ii = s.invInertia.data();
-    Real maxV2 = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-        const Real kx = h * fx[i] * im[i], ky = h * fy[i] * im[i], kw = h * tq[i] * ii[i];
-        hvx[i] = vx[i] + kx;
-        hvy[i] = vy[i] + ky;
-        hw[i] = w[i] + kw;
-        x[i] += dt * hvx[i];
-        y[i] += dt * hvy[i];
-        a[i] += dt * hw[i];
-        vx[i] = hvx[i] + kx;  // predicted v(t + dt) for velocity-dependent forces
-        vy[i] = hvy[i] + ky;
-        w[i] = hw[i] + kw;
-        const Real v2 = hvx[i] * hvx[i] + hvy[i] * hvy[i];
-        maxV2 = (v2 > maxV2 || v2 != v2) ? v2 : maxV2;  // NaN propagates
-    }
-    return std::sqrt(maxV2);
+    return std::sqrt(parallelMax(m_threads, n, [&](std::size_t begin, std::size_t end) {
+        // Block-local restrict pointers: the loop vectorizes as in a plain function.
+        Real* __restrict x = s.x.data();
+        Real* __restrict y = s.y.data();
+        Real* __restrict vx = s.vx.data();
+        Real* __restrict vy = s.vy.data();
+        Real* __restrict a = s.angle.data();
+        Real* __restrict w = s.omega.data();
+        Real* __restrict hvx = m_half[0];
+        Real* __restrict hvy = m_half[1];
+        Real* __restrict hw = m_half[2];
+        const Real* __restrict fx = s.fx.data();
+        const Real* __restrict fy = s.fy.data();
+        const Real* __restrict tq = s.torque.data();
+        const Real* __restrict im = s.invMass.data();
+        const Real* __restrict ii = s.invInertia.data();
+        Real maxV2 = 0;
+        bool nonFinite = false;
+        for (std::size_t i = begin; i < end; ++i) {
+            const Real kx = h * fx[i] * im[i], ky = h * fy[i] * im[i], kw = h * tq[i] * ii[i];
+            hvx[i] = vx[i] + kx;
+            hvy[i] = vy[i] + ky;
+            hw[i] = w[i] + kw;
+            x[i] += dt * hvx[i];
+            y[i] += dt * hvy[i];
+            a[i] += dt * hw[i];
+            vx[i] = hvx[i] + kx;  // predicted v(t + dt) for velocity-dependent forces
+            vy[i] = hvy[i] + ky;
+            w[i] = hw[i] + kw;
+            const Real v2 = hvx[i] * hvx[i] + hvy[i] * hvy[i];
+            maxV2 = v2 > maxV2 ? v2 : maxV2;
+            nonFinite |= !(v2 == v2);  // NaN is seen by the caller
+        }
+        return nonFinite ? std::numeric_limits<Real>::quiet_NaN() : maxV2;
+    }));
 }
 
 bool VelocityVerlet::correct(model::ParticleStore& s, Real dt, int) noexcept {
-    const std::size_t n = s.size();
     const Real h = 0.5 * dt;
-    for (std::size_t i = 0; i < n; ++i) {
-        s.vx[i] = m_half[0][i] + h * s.fx[i] * s.invMass[i];
-        s.vy[i] = m_half[1][i] + h * s.fy[i] * s.invMass[i];
-        s.omega[i] = m_half[2][i] + h * s.torque[i] * s.invInertia[i];
-    }
+    parallelBlocks(m_threads, s.size(), [&](std::size_t begin, std::size_t end, std::size_t) {
+        Real* __restrict vx = s.vx.data();
+        Real* __restrict vy = s.vy.data();
+        Real* __restrict w = s.omega.data();
+        const Real* __restrict hvx = m_half[0];
+        const Real* __restrict hvy = m_half[1];
+        const Real* __restrict hw = m_half[2];
+        const Real* __restrict fx = s.fx.data();
+        const Real* __restrict fy = s.fy.data();
+        const Real* __restrict tq = s.torque.data();
+        const Real* __restrict im = s.invMass.data();
+        const Real* __restrict ii = s.invInertia.data();
+        for (std::size_t i = begin; i < end; ++i) {
+            vx[i] = hvx[i] + h * fx[i] * im[i];
+            vy[i] = hvy[i] + h * fy[i] * im[i];
+            w[i] = hw[i] + h * tq[i] * ii[i];
+        }
+    });
     return true;
 }
 
@@ -107,18 +132,20 @@ bool VelocityVerlet::correct(model::ParticleStore& s, Real dt, int) noexcept {
 Real ExplicitEuler::predict(model::ParticleStore& s, Real dt) noexcept {
     const std::size_t n = s.size();
     m_old.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        m_old[0][i] = s.vx[i];
-        m_old[1][i] = s.vy[i];
-        m_old[2][i] = s.omega[i];
-        s.x[i] += dt * s.vx[i];
-        s.y[i] += dt * s.vy[i];
-        s.angle[i] += dt * s.omega[i];
-        s.vx[i] += dt * s.fx[i] * s.invMass[i];
-        s.vy[i] += dt * s.fy[i] * s.invMass[i];
-        s.omega[i] += dt * s.torque[i] * s.invInertia[i];
-    }
-    return maxSpeed(s);
+    parallelBlocks(m_threads, n, [&](std::size_t begin, std::size_t end, std::size_t) {
+        for (std::size_t i = begin; i < end; ++i) {
+            m_old[0][i] = s.vx[i];
+            m_old[1][i] = s.vy[i];
+            m_old[2][i] = s.omega[i];
+            s.x[i] += dt * s.vx[i];
+            s.y[i] += dt * s.vy[i];
+            s.angle[i] += dt * s.omega[i];
+            s.vx[i] += dt * s.fx[i] * s.invMass[i];
+            s.vy[i] += dt * s.fy[i] * s.invMass[i];
+            s.omega[i] += dt * s.torque[i] * s.invInertia[i];
+        }
+    });
+    return maxSpeed(s, m_threads);
 }
 
 bool ExplicitEuler::correct(model::ParticleStore&, Real, int) noexcept {
@@ -138,16 +165,18 @@ Real PredictorCorrector::predict(model::ParticleStore& s, Real dt) noexcept {
     Real* vn[3] = {m_state[3], m_state[4], m_state[5]};
     Real* drift[3] = {m_state[6], m_state[7], m_state[8]};
     const Dofs dof(s);
-    for (int d = 0; d < 3; ++d)
-        for (std::size_t i = 0; i < n; ++i) {
-            const Real a = dof.force[d][i] * dof.inv[d][i];  // acceleration accepted at t (Eq. 3.16-3.19)
-            ap[d][i] = a;
-            vn[d][i] = dof.vel[d][i];
-            dof.pos[d][i] += dof.vel[d][i] * dt + 0.5 * a * dt * dt;
-            dof.vel[d][i] += a * dt;
-            drift[d][i] = m_maxIterations == 0 ? dof.vel[d][i] : 0.5 * (vn[d][i] + dof.vel[d][i]);
-        }
-    return maxSpeed(s);
+    parallelBlocks(m_threads, n, [&](std::size_t begin, std::size_t end, std::size_t) {
+        for (int d = 0; d < 3; ++d)
+            for (std::size_t i = begin; i < end; ++i) {
+                const Real a = dof.force[d][i] * dof.inv[d][i];  // acceleration accepted at t (Eq. 3.16-3.19)
+                ap[d][i] = a;
+                vn[d][i] = dof.vel[d][i];
+                dof.pos[d][i] += dof.vel[d][i] * dt + 0.5 * a * dt * dt;
+                dof.vel[d][i] += a * dt;
+                drift[d][i] = m_maxIterations == 0 ? dof.vel[d][i] : 0.5 * (vn[d][i] + dof.vel[d][i]);
+            }
+    });
+    return maxSpeed(s, m_threads);
 }
 
 bool PredictorCorrector::correct(model::ParticleStore& s, Real dt, int iteration) noexcept {
@@ -157,22 +186,26 @@ bool PredictorCorrector::correct(model::ParticleStore& s, Real dt, int iteration
     Real* vn[3] = {m_state[3], m_state[4], m_state[5]};
     Real* drift[3] = {m_state[6], m_state[7], m_state[8]};
     const Dofs dof(s);
-    Real worst = 0;  // Eq. 3.24: the largest |a^c - a^p| over all particles and components
-    for (int d = 0; d < 3; ++d)
-        for (std::size_t i = 0; i < n; ++i) {
-            const Real delta = std::abs(dof.force[d][i] * dof.inv[d][i] - ap[d][i]);
-            worst = (delta > worst || delta != delta) ? delta : worst;
-        }
+    // Eq. 3.24: the largest |a^c - a^p| over all particles and components.
+    const Real worst = parallelMax(m_threads, n, [&](std::size_t begin, std::size_t end) {
+        Real w = 0;
+        for (int d = 0; d < 3; ++d)
+            for (std::size_t i = begin; i < end; ++i)
+                w = maxOrNaN(w, std::abs(dof.force[d][i] * dof.inv[d][i] - ap[d][i]));
+        return w;
+    });
     if (worst <= m_tolerance || iteration >= m_maxIterations || worst != worst) return true;
     const Real c = m_corrector;
-    for (int d = 0; d < 3; ++d)
-        for (std::size_t i = 0; i < n; ++i) {
-            const Real da = dof.force[d][i] * dof.inv[d][i] - ap[d][i];
-            dof.pos[d][i] += 0.25 * c * da * dt * dt;  // Eq. 3.25
-            dof.vel[d][i] += 0.5 * c * da * dt;        // Eq. 3.26
-            ap[d][i] += c * da;                        // Eq. 3.27
-            drift[d][i] = 0.5 * (vn[d][i] + dof.vel[d][i]);
-        }
+    parallelBlocks(m_threads, n, [&](std::size_t begin, std::size_t end, std::size_t) {
+        for (int d = 0; d < 3; ++d)
+            for (std::size_t i = begin; i < end; ++i) {
+                const Real da = dof.force[d][i] * dof.inv[d][i] - ap[d][i];
+                dof.pos[d][i] += 0.25 * c * da * dt * dt;  // Eq. 3.25
+                dof.vel[d][i] += 0.5 * c * da * dt;        // Eq. 3.26
+                ap[d][i] += c * da;                        // Eq. 3.27
+                drift[d][i] = 0.5 * (vn[d][i] + dof.vel[d][i]);
+            }
+    });
     return false;
 }
 
@@ -182,45 +215,53 @@ Real GearPredictorCorrector::predict(model::ParticleStore& s, Real dt) noexcept 
     const std::size_t n = s.size();
     m_state.resize(n);
     const Dofs dof(s);
-    for (int d = 0; d < 3; ++d) {
-        auto [r2, r3, r4, r5] = higherDerivatives(d);
-        Real* drift = m_state[12 + d];
-        for (std::size_t i = 0; i < n; ++i) {
-            if (!m_started) {  // start from the forces at t = 0, higher derivatives zero
-                r2[i] = 0.5 * dt * dt * dof.force[d][i] * dof.inv[d][i];
-                r3[i] = r4[i] = r5[i] = 0;
+    std::array<std::array<Real*, 4>, 3> higher;
+    for (int d = 0; d < 3; ++d) higher[static_cast<std::size_t>(d)] = higherDerivatives(d);
+    parallelBlocks(m_threads, n, [&](std::size_t begin, std::size_t end, std::size_t) {
+        for (int d = 0; d < 3; ++d) {
+            auto [r2, r3, r4, r5] = higher[static_cast<std::size_t>(d)];
+            Real* drift = m_state[12 + d];
+            for (std::size_t i = begin; i < end; ++i) {
+                if (!m_started) {  // start from the forces at t = 0, higher derivatives zero
+                    r2[i] = 0.5 * dt * dt * dof.force[d][i] * dof.inv[d][i];
+                    r3[i] = r4[i] = r5[i] = 0;
+                }
+                const Real r1 = dof.vel[d][i] * dt;
+                // Pascal-matrix predictor (Eq. F.11), each row using the old higher values.
+                const Real dr0 = r1 + r2[i] + r3[i] + r4[i] + r5[i];
+                dof.pos[d][i] += dr0;
+                dof.vel[d][i] = (r1 + 2 * r2[i] + 3 * r3[i] + 4 * r4[i] + 5 * r5[i]) / dt;
+                r2[i] += 3 * r3[i] + 6 * r4[i] + 10 * r5[i];
+                r3[i] += 4 * r4[i] + 10 * r5[i];
+                r4[i] += 5 * r5[i];
+                drift[i] = dr0 / dt;
             }
-            const Real r1 = dof.vel[d][i] * dt;
-            // Pascal-matrix predictor (Eq. F.11), each row using the old higher values.
-            const Real dr0 = r1 + r2[i] + r3[i] + r4[i] + r5[i];
-            dof.pos[d][i] += dr0;
-            dof.vel[d][i] = (r1 + 2 * r2[i] + 3 * r3[i] + 4 * r4[i] + 5 * r5[i]) / dt;
-            r2[i] += 3 * r3[i] + 6 * r4[i] + 10 * r5[i];
-            r3[i] += 4 * r4[i] + 10 * r5[i];
-            r4[i] += 5 * r5[i];
-            drift[i] = dr0 / dt;
         }
-    }
+    });
     m_started = true;
-    return maxSpeed(s);
+    return maxSpeed(s, m_threads);
 }
 
 bool GearPredictorCorrector::correct(model::ParticleStore& s, Real dt, int) noexcept {
     constexpr Real c1 = 251.0 / 360.0, c3 = 11.0 / 18.0, c4 = 1.0 / 6.0, c5 = 1.0 / 60.0;  // Table F.1, p = 2
     const std::size_t n = s.size();
     const Dofs dof(s);
-    for (int d = 0; d < 3; ++d) {
-        auto [r2, r3, r4, r5] = higherDerivatives(d);
-        for (std::size_t i = 0; i < n; ++i) {
-            const Real delta = 0.5 * dt * dt * dof.force[d][i] * dof.inv[d][i] - r2[i];  // Eq. F.13
-            dof.pos[d][i] += m_c0 * delta;
-            dof.vel[d][i] += c1 * delta / dt;
-            r2[i] += delta;
-            r3[i] += c3 * delta;
-            r4[i] += c4 * delta;
-            r5[i] += c5 * delta;
+    std::array<std::array<Real*, 4>, 3> higher;
+    for (int d = 0; d < 3; ++d) higher[static_cast<std::size_t>(d)] = higherDerivatives(d);
+    parallelBlocks(m_threads, n, [&](std::size_t begin, std::size_t end, std::size_t) {
+        for (int d = 0; d < 3; ++d) {
+            auto [r2, r3, r4, r5] = higher[static_cast<std::size_t>(d)];
+            for (std::size_t i = begin; i < end; ++i) {
+                const Real delta = 0.5 * dt * dt * dof.force[d][i] * dof.inv[d][i] - r2[i];  // Eq. F.13
+                dof.pos[d][i] += m_c0 * delta;
+                dof.vel[d][i] += c1 * delta / dt;
+                r2[i] += delta;
+                r3[i] += c3 * delta;
+                r4[i] += c4 * delta;
+                r5[i] += c5 * delta;
+            }
         }
-    }
+    });
     return true;
 }
 

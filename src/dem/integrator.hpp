@@ -55,6 +55,11 @@ public:
     /// State that must survive a checkpoint (default: none).
     virtual void save(std::ostream&) const {}
     virtual void load(std::istream&, std::size_t /*particles*/) {}
+    /// Threads of predict and correct (elementwise loops: the results do not depend on them).
+    void setThreads(int threads) noexcept { m_threads = threads > 1 ? threads : 1; }
+
+protected:
+    int m_threads = 1;
 };
 
 /// Columns of per-particle integrator state, reordered and sized together.

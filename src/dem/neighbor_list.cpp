@@ -5,22 +5,34 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
+#include "core/parallel.hpp"
 #include "geom/segment.hpp"
 
 namespace granulab::dem {
 
-bool NeighborList::needsRebuild(const model::ParticleStore& s, Real skin, Real wallTravel) const noexcept {
+bool NeighborList::needsRebuild(const model::ParticleStore& s, Real skin, Real wallTravel,
+                                int threads) const noexcept {
     if (x0.size() != s.size()) return true;
     const Real half = 0.5 * skin - wallTravel;
     if (half <= 0) return true;
     const Real limit2 = half * half;
-    Real max2 = 0;
-    const std::size_t n = s.size();
-    for (std::size_t i = 0; i < n; ++i) {
-        const Real dx = s.x[i] - x0[i], dy = s.y[i] - y0[i];
-        max2 = std::max(max2, dx * dx + dy * dy);
-    }
+    const Real max2 = parallelMax(threads, s.size(), [&](std::size_t begin, std::size_t end) {
+        const Real* __restrict x = s.x.data();
+        const Real* __restrict y = s.y.data();
+        const Real* __restrict px = x0.data();
+        const Real* __restrict py = y0.data();
+        Real m = 0;
+        bool nonFinite = false;
+        for (std::size_t i = begin; i < end; ++i) {
+            const Real dx = x[i] - px[i], dy = y[i] - py[i];
+            const Real d2 = dx * dx + dy * dy;
+            m = d2 > m ? d2 : m;  // vectorizes; NaN is tracked apart
+            nonFinite |= !(d2 == d2);
+        }
+        return nonFinite ? std::numeric_limits<Real>::quiet_NaN() : m;
+    });
     return !(max2 <= limit2);  // NaN-safe: a non-finite position forces a rebuild
 }
 
@@ -66,22 +78,36 @@ std::vector<OldHistory> collectHistory(const ContactList& list, const std::vecto
     return out;
 }
 
-/// Buckets sorted keys by law form and restores history.
+/// Where a list entry goes: its tile (that of its first slot), inner or cross (a particle pair
+/// whose second slot lies in another tile), and its law form.
+struct Layout {
+    const NeighborList& list;
+    SlotTiles tiles;
+    bool particlePairs;
+    std::uint32_t bucketCount() const noexcept { return list.bucket(tiles.count, false, 0); }
+    std::uint32_t bucketOf(std::uint32_t first, std::uint32_t second, std::uint32_t form) const noexcept {
+        const std::uint32_t t = tiles.tileOf(first);
+        return list.bucket(t, particlePairs && tiles.tileOf(second) != t, form);
+    }
+};
+
+/// Sorted keys grouped into the buckets of `layout` (stable: (first, second) order inside a
+/// bucket), with their history restored from `old`.
 template <class MaterialOfSecond>
 void fillList(ContactList& list, const std::vector<std::uint64_t>& keys, const std::vector<OldHistory>& old,
-              const model::ParticleStore& s, const LawTable& laws, bool trialHistory,
-              MaterialOfSecond materialOfSecond) {
-    const std::uint32_t forms = std::max<std::uint32_t>(laws.formCount(), 1);
-    list.bucketStart.assign(forms + 1, 0);
-    std::vector<std::uint32_t> formOfKey(keys.size());
+              const model::ParticleStore& s, const LawTable& laws, const Layout& layout, bool trialHistory,
+              int threads, MaterialOfSecond materialOfSecond) {
+    list.bucketStart.assign(layout.bucketCount() + std::size_t{1}, 0);
+    std::vector<std::uint32_t> pos(keys.size());
     for (std::size_t k = 0; k < keys.size(); ++k) {
-        const std::uint32_t a = keyFirst(keys[k]);
-        const std::uint32_t f =
-            laws.formCount() ? laws.formOf(s.material[a], materialOfSecond(keySecond(keys[k]))) : 0;
-        formOfKey[k] = f;
-        ++list.bucketStart[f + 1];
+        const std::uint32_t a = keyFirst(keys[k]), b = keySecond(keys[k]);
+        const std::uint32_t f = laws.formCount() ? laws.formOf(s.material[a], materialOfSecond(b)) : 0;
+        pos[k] = layout.bucketOf(a, b, f);
+        ++list.bucketStart[pos[k] + 1];
     }
-    for (std::uint32_t f = 0; f < forms; ++f) list.bucketStart[f + 1] += list.bucketStart[f];
+    for (std::size_t b = 1; b < list.bucketStart.size(); ++b) list.bucketStart[b] += list.bucketStart[b - 1];
+    std::vector<std::uint32_t> fill(list.bucketStart.begin(), list.bucketStart.end() - 1);
+    for (auto& p : pos) p = fill[p]++;
     list.first.resize(keys.size());
     list.second.resize(keys.size());
     list.xi.assign(keys.size(), 0.0);
@@ -93,21 +119,62 @@ void fillList(ContactList& list, const std::vector<std::uint64_t>& keys, const s
     list.areaOld.assign(area ? keys.size() : 0, 0.0);
     list.areaOldTrial.assign(area && trialHistory ? keys.size() : 0, 0.0);
     list.features.assign(area ? keys.size() : 0, geom::FeatureCache{});
-    std::vector<std::uint32_t> fill(list.bucketStart.begin(), list.bucketStart.end() - 1);
-    for (std::size_t k = 0; k < keys.size(); ++k) {
-        const std::uint32_t pos = fill[formOfKey[k]]++;
-        list.first[pos] = keyFirst(keys[k]);
-        list.second[pos] = keySecond(keys[k]);
-        auto it = std::lower_bound(old.begin(), old.end(), OldHistory{keys[k], 0, 0, 0, {}});
-        if (it != old.end() && it->key == keys[k]) {
-            list.xi[pos] = it->xi;
-            if (rolling) list.zeta[pos] = it->zeta;
-            if (area) {
-                list.areaOld[pos] = it->areaOld;
-                list.features[pos] = it->features;
+    parallelBlocks(threads, keys.size(), [&](std::size_t begin, std::size_t end, std::size_t) {
+        for (std::size_t k = begin; k < end; ++k) {
+            const std::uint32_t p = pos[k];
+            list.first[p] = keyFirst(keys[k]);
+            list.second[p] = keySecond(keys[k]);
+            auto it = std::lower_bound(old.begin(), old.end(), OldHistory{keys[k], 0, 0, 0, {}});
+            if (it != old.end() && it->key == keys[k]) {
+                list.xi[p] = it->xi;
+                if (rolling) list.zeta[p] = it->zeta;
+                if (area) {
+                    list.areaOld[p] = it->areaOld;
+                    list.features[p] = it->features;
+                }
             }
         }
-    }
+    });
+}
+
+/// Bucket of every entry of `l` (tiles x 2 x forms buckets, form = bucket mod forms).
+std::vector<std::uint32_t> bucketsOfEntries(const ContactList& l) {
+    std::vector<std::uint32_t> bucketOf(l.size(), 0);
+    for (std::uint32_t b = 0; b + 1 < l.bucketStart.size(); ++b)
+        for (std::uint32_t k = l.bucketStart[b]; k < l.bucketStart[b + 1]; ++k) bucketOf[k] = b;
+    return bucketOf;
+}
+
+/// Entry k of every per-pair column of `l` (columns may be empty) moves to bucket bucketOf[k]
+/// (kRemovedSlot: dropped), keeping the order of the entries inside a bucket.
+void regroup(ContactList& l, const std::vector<std::uint32_t>& bucketOf, std::uint32_t buckets) {
+    const std::size_t n = l.size();
+    std::vector<std::uint32_t> start(buckets + std::size_t{1}, 0);
+    for (std::size_t k = 0; k < n; ++k)
+        if (bucketOf[k] != kRemovedSlot) ++start[bucketOf[k] + 1];
+    for (std::size_t b = 1; b < start.size(); ++b) start[b] += start[b - 1];
+    std::vector<std::uint32_t> dest(n, kRemovedSlot);
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    for (std::size_t k = 0; k < n; ++k)
+        if (bucketOf[k] != kRemovedSlot) dest[k] = fill[bucketOf[k]]++;
+    const std::size_t kept = start.back();
+    const auto move = [&](auto& col) {
+        if (col.size() != n) return;
+        std::remove_reference_t<decltype(col)> out(kept);
+        for (std::size_t k = 0; k < n; ++k)
+            if (dest[k] != kRemovedSlot) out[dest[k]] = col[k];
+        col.swap(out);
+    };
+    move(l.first);
+    move(l.second);
+    move(l.xi);
+    move(l.xiTrial);
+    move(l.zeta);
+    move(l.zetaTrial);
+    move(l.areaOld);
+    move(l.areaOldTrial);
+    move(l.features);
+    l.bucketStart = std::move(start);
 }
 
 }  // namespace
@@ -120,52 +187,30 @@ std::uint32_t pairSegment(const model::WallSet& walls, std::uint32_t seg) noexce
     return wall.body ? wall.firstSegment : seg;
 }
 
-/// Keeps the entries k with keep[k] of every per-pair column of `l` (columns may be empty).
-void compactList(ContactList& l, const std::vector<char>& keep, const std::vector<std::uint32_t>& bucketOf) {
-    const std::size_t n = l.size();
-    const auto compact = [&](auto& col) {
-        if (col.size() != n) return;
-        std::size_t w = 0;
-        for (std::size_t k = 0; k < n; ++k)
-            if (keep[k]) col[w++] = col[k];
-        col.resize(w);
-    };
-    compact(l.first);
-    compact(l.second);
-    compact(l.xi);
-    compact(l.xiTrial);
-    compact(l.zeta);
-    compact(l.zetaTrial);
-    compact(l.areaOld);
-    compact(l.areaOldTrial);
-    compact(l.features);
-    if (l.bucketStart.empty()) return;
-    std::vector<std::uint32_t> start(l.bucketStart.size(), 0);
-    for (std::size_t k = 0; k < n; ++k)
-        if (keep[k]) ++start[bucketOf[k] + 1];
-    for (std::size_t b = 1; b < start.size(); ++b) start[b] += start[b - 1];
-    l.bucketStart = std::move(start);
-}
 }  // namespace
 
 void NeighborList::removeSlots(const std::vector<std::uint32_t>& oldToNew) {
+    std::size_t kept = 0;
+    for (const std::uint32_t k : oldToNew) kept += k != kRemovedSlot ? 1 : 0;
+    const SlotTiles newTiles = SlotTiles::forParticles(kept, minTileSlots);
     for (auto* l : {&pairs, &wallPairs}) {
         const bool both = l == &pairs;
-        const std::size_t n = l->size();
-        std::vector<char> keep(n, 0);
-        std::vector<std::uint32_t> bucketOf(n, 0);
-        for (std::uint32_t b = 0; b + 1 < l->bucketStart.size(); ++b)
-            for (std::uint32_t k = l->bucketStart[b]; k < l->bucketStart[b + 1]; ++k) bucketOf[k] = b;
-        for (std::size_t k = 0; k < n; ++k) {
+        const Layout layout{*this, newTiles, both};
+        std::vector<std::uint32_t> bucketOf = bucketsOfEntries(*l);
+        for (std::size_t k = 0; k < l->size(); ++k) {
             const std::uint32_t a = oldToNew[l->first[k]];
             const std::uint32_t b = both ? oldToNew[l->second[k]] : l->second[k];
-            keep[k] = a != kRemovedSlot && b != kRemovedSlot;
-            if (!keep[k]) continue;
+            if (a == kRemovedSlot || b == kRemovedSlot) {
+                bucketOf[k] = kRemovedSlot;
+                continue;
+            }
             l->first[k] = a;
             l->second[k] = b;
+            bucketOf[k] = layout.bucketOf(a, b, bucketOf[k] % forms);
         }
-        compactList(*l, keep, bucketOf);
+        regroup(*l, bucketOf, layout.bucketCount());
     }
+    tiles = newTiles;
     std::size_t w = 0;
     for (std::size_t i = 0; i < oldToNew.size() && i < x0.size(); ++i)
         if (oldToNew[i] != kRemovedSlot) {
@@ -175,56 +220,39 @@ void NeighborList::removeSlots(const std::vector<std::uint32_t>& oldToNew) {
         }
     x0.resize(w);
     y0.resize(w);
+    indexCrossPairs();
 }
 
 namespace {
-/// Inserts `added` (form, first, second), in order, at the end of their buckets of `l`.
-void appendToBuckets(ContactList& l, const std::vector<std::array<std::uint32_t, 3>>& added,
-                     std::uint32_t forms, bool rolling, bool area, bool trialHistory) {
-    if (added.empty()) return;
-    if (l.bucketStart.empty()) l.bucketStart.assign(forms + 1, 0);
-    const std::size_t n = l.size(), m = n + added.size();
-    ContactList out;
-    out.first.reserve(m);
-    out.second.reserve(m);
-    out.bucketStart.assign(l.bucketStart.size(), 0);
-    const auto copyRange = [&](std::size_t b, std::size_t e) {
-        for (std::size_t k = b; k < e; ++k) {
-            out.first.push_back(l.first[k]);
-            out.second.push_back(l.second[k]);
-            out.xi.push_back(l.xi[k]);
-            if (!l.zeta.empty()) out.zeta.push_back(l.zeta[k]);
-            if (!l.areaOld.empty()) out.areaOld.push_back(l.areaOld[k]);
-            if (!l.features.empty()) out.features.push_back(l.features[k]);
-        }
-    };
-    for (std::uint32_t f = 0; f + 1 < l.bucketStart.size(); ++f) {
-        out.bucketStart[f] = static_cast<std::uint32_t>(out.first.size());
-        copyRange(l.bucketStart[f], l.bucketStart[f + 1]);
-        for (const auto& a : added) {
-            if (a[0] != f) continue;
-            out.first.push_back(a[1]);
-            out.second.push_back(a[2]);
-            out.xi.push_back(0);
-            if (rolling) out.zeta.push_back(0);
-            if (area) {
-                out.areaOld.push_back(0);
-                out.features.push_back(geom::FeatureCache{});
-            }
-        }
+/// Appends `added` (form, first, second) with empty history to `l` and regroups every entry by
+/// `layout` (the new particles' entries at the end of their buckets).
+void appendAndRegroup(ContactList& l, const std::vector<std::array<std::uint32_t, 3>>& added,
+                      const Layout& layout, std::uint32_t forms, bool rolling, bool area, bool trialHistory) {
+    std::vector<std::uint32_t> bucketOf = bucketsOfEntries(l);
+    for (std::size_t k = 0; k < l.size(); ++k)
+        bucketOf[k] = layout.bucketOf(l.first[k], l.second[k], bucketOf[k] % forms);
+    const std::size_t m = l.size() + added.size();
+    for (const auto& a : added) {
+        l.first.push_back(a[1]);
+        l.second.push_back(a[2]);
+        bucketOf.push_back(layout.bucketOf(a[1], a[2], a[0]));
     }
-    out.bucketStart.back() = static_cast<std::uint32_t>(out.first.size());
+    l.xi.resize(m, 0.0);
+    if (rolling) l.zeta.resize(m, 0.0);
+    if (area) {
+        l.areaOld.resize(m, 0.0);
+        l.features.resize(m, geom::FeatureCache{});
+    }
     // Trial columns are scratch refreshed from the accepted ones at every evaluation.
-    if (!l.xiTrial.empty() || trialHistory) out.xiTrial.assign(m, 0.0);
-    if (!l.zetaTrial.empty()) out.zetaTrial.assign(m, 0.0);
-    if (!l.areaOldTrial.empty()) out.areaOldTrial.assign(m, 0.0);
-    l = std::move(out);
+    if (!l.xiTrial.empty() || trialHistory) l.xiTrial.resize(m, 0.0);
+    if (!l.zetaTrial.empty()) l.zetaTrial.resize(m, 0.0);
+    if (!l.areaOldTrial.empty()) l.areaOldTrial.resize(m, 0.0);
+    regroup(l, bucketOf, layout.bucketCount());
 }
 }  // namespace
 
 void NeighborList::appendParticles(const model::ParticleStore& s, const model::WallSet& walls,
                                    std::size_t first, Real skin, const LawTable& laws, bool trialHistory) {
-    const std::uint32_t forms = std::max<std::uint32_t>(laws.formCount(), 1);
     const auto formOf = [&](std::uint32_t ma, std::uint32_t mb) {
         return laws.formCount() ? laws.formOf(ma, mb) : 0u;
     };
@@ -250,22 +278,30 @@ void NeighborList::appendParticles(const model::ParticleStore& s, const model::W
             wallAdds.push_back({formOf(s.material[k], seg.material), kk, key});
         }
     }
-    appendToBuckets(pairs, pairAdds, forms, laws.hasRolling(), laws.hasArea(), trialHistory);
-    appendToBuckets(wallPairs, wallAdds, forms, laws.hasRolling(), laws.hasArea(), trialHistory);
+    const SlotTiles newTiles = SlotTiles::forParticles(s.size(), minTileSlots);
+    appendAndRegroup(pairs, pairAdds, Layout{*this, newTiles, true}, forms, laws.hasRolling(), laws.hasArea(),
+                     trialHistory);
+    appendAndRegroup(wallPairs, wallAdds, Layout{*this, newTiles, false}, forms, laws.hasRolling(),
+                     laws.hasArea(), trialHistory);
+    tiles = newTiles;
     for (std::size_t k = first; k < s.size(); ++k) {
         x0.push_back(s.x[k]);
         y0.push_back(s.y[k]);
     }
+    indexCrossPairs();
 }
 
 void NeighborList::rebuild(const model::ParticleStore& s, const model::WallSet& walls, Real skin, Real time,
                            BroadPhase& broad, const LawTable& laws,
-                           const std::vector<std::uint32_t>& oldToNew, bool trialHistory) {
+                           const std::vector<std::uint32_t>& oldToNew, bool trialHistory, int threads) {
     const auto oldPairs = collectHistory(pairs, oldToNew, true);
     const auto oldWall = collectHistory(wallPairs, oldToNew, false);
+    tiles = SlotTiles::forParticles(s.size(), minTileSlots);
+    forms = std::max<std::uint32_t>(laws.formCount(), 1);
     std::vector<std::uint64_t> keys;
     broad.findPairs(s, skin, keys);
-    fillList(pairs, keys, oldPairs, s, laws, trialHistory, [&](std::uint32_t j) { return s.material[j]; });
+    fillList(pairs, keys, oldPairs, s, laws, Layout{*this, tiles, true}, trialHistory, threads,
+             [&](std::uint32_t j) { return s.material[j]; });
     broad.findWallPairs(s, walls, skin, keys);
     // A body wall's segment candidates become one pair per particle (pairSegment).
     bool anyBody = false;
@@ -278,12 +314,57 @@ void NeighborList::rebuild(const model::ParticleStore& s, const model::WallSet& 
         std::sort(keys.begin(), keys.end());
         keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
     }
-    fillList(wallPairs, keys, oldWall, s, laws, trialHistory,
+    fillList(wallPairs, keys, oldWall, s, laws, Layout{*this, tiles, false}, trialHistory, threads,
              [&](std::uint32_t seg) { return walls.segments[seg].material; });
     x0 = s.x;
     y0 = s.y;
     wallTime0 = time;
     ++builds;
+    indexCrossPairs();
+}
+
+bool NeighborList::restoreLayout(std::size_t particles, const LawTable& laws) {
+    tiles = SlotTiles::forParticles(particles, minTileSlots);
+    forms = std::max<std::uint32_t>(laws.formCount(), 1);
+    const std::size_t offsets = bucket(tiles.count, false, 0) + std::size_t{1};
+    for (const ContactList* l : {&pairs, &wallPairs}) {
+        if (l->bucketStart.size() != offsets || l->bucketStart.front() != 0 ||
+            l->bucketStart.back() != l->size() ||
+            !std::is_sorted(l->bucketStart.begin(), l->bucketStart.end()))
+            return false;
+        for (std::uint32_t t = 0; t < tiles.count; ++t)
+            for (std::uint32_t k = tileBegin(*l, t); k < tileBegin(*l, t + 1); ++k) {
+                const std::uint32_t a = l->first[k], b = l->second[k];
+                const bool cross = k >= l->bucketStart[bucket(t, true, 0)];
+                if (tiles.tileOf(a) != t || (l == &pairs && (a >= b || cross != (tiles.tileOf(b) != t))) ||
+                    (l == &wallPairs && cross))
+                    return false;
+            }
+    }
+    indexCrossPairs();
+    return true;
+}
+
+void NeighborList::indexCrossPairs() {
+    const std::uint32_t count = tiles.count;
+    crossBase.assign(count + std::size_t{1}, 0);
+    gatherStart.assign(count + std::size_t{1}, 0);
+    for (std::uint32_t t = 0; t < count; ++t) {
+        crossBase[t + 1] = crossBase[t] + (tileBegin(pairs, t + 1) - crossBegin(t));
+        for (std::uint32_t p = crossBegin(t); p < tileBegin(pairs, t + 1); ++p)
+            ++gatherStart[tiles.tileOf(pairs.second[p]) + 1];
+    }
+    for (std::uint32_t t = 0; t < count; ++t) gatherStart[t + 1] += gatherStart[t];
+    gatherFrom.resize(crossPairs());
+    gatherSlot.resize(crossPairs());
+    std::vector<std::uint32_t> fill(gatherStart.begin(), gatherStart.end() - 1);
+    for (std::uint32_t t = 0; t < count; ++t)
+        for (std::uint32_t p = crossBegin(t); p < tileBegin(pairs, t + 1); ++p) {
+            const std::uint32_t j = pairs.second[p];
+            const std::uint32_t e = fill[tiles.tileOf(j)]++;
+            gatherFrom[e] = crossBase[t] + (p - crossBegin(t));
+            gatherSlot[e] = j;
+        }
 }
 
 }  // namespace granulab::dem

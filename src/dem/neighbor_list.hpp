@@ -2,14 +2,18 @@
 // Verlet neighbour list with skin and per-pair contact history (DESIGN.md stages 3 and 5).
 // Candidate pairs are kept between rebuilds; history (the tangential spring) lives beside each
 // pair and is carried over at a rebuild by key, so contacts persist across rebuilds and slot
-// reorders. Pairs are bucketed by law form and sorted by (first, second) inside a bucket, which
-// fixes the force summation order (deterministic).
+// reorders. Pairs are grouped by slot tile (dem/slot_tiles.hpp: the tile of the first slot), then
+// inner / cross (the second slot in the same tile or another), then law form, and sorted by
+// (first, second) inside a bucket. That fixes the force summation order for any thread count:
+// a tile's pairs add to its own grains directly; a cross pair's share for its second grain is
+// deferred and gathered by that grain's tile in a fixed order (docs/physics/dem-threads.md).
 #pragma once
 #include <cstdint>
 #include <vector>
 
 #include "dem/broad_phase.hpp"
 #include "dem/law_table.hpp"
+#include "dem/slot_tiles.hpp"
 #include "geom/convex_contact.hpp"
 #include "model/particle_store.hpp"
 #include "model/walls.hpp"
@@ -24,7 +28,10 @@ struct ContactList {
     // gc2d area contacts only (empty otherwise):
     std::vector<Real> areaOld, areaOldTrial;   ///< [m^2] overlap area of the last step (Old_Area, Eq. 2.22)
     std::vector<geom::FeatureCache> features;  ///< closest features / crossings of the last evaluation
-    std::vector<std::uint32_t> bucketStart;    ///< formCount + 1 offsets
+    /// Offsets of the buckets, (tile, cross, form) in that order: bucket (2 t + cross) F + f of
+    /// NeighborList::bucket; tiles x 2 x forms + 1 entries (the wall list has no cross buckets
+    /// filled: its second is a segment).
+    std::vector<std::uint32_t> bucketStart;
 
     /// Accepts the trial springs of the step (iterating integrators only).
     void commitHistory() noexcept {
@@ -53,10 +60,35 @@ public:
     std::vector<Real> x0, y0;  ///< [m] positions at the last rebuild
     Real wallTime0 = 0;        ///< [s] time of the last rebuild (for wall motion)
     std::uint64_t builds = 0;
+    SlotTiles tiles;          ///< the tiles of the particle count at the last change of the lists
+    std::uint32_t forms = 1;  ///< law forms of the buckets (at least 1)
+    /// Fewest slots per tile (SlotTiles::forParticles); tests set it to compare tilings.
+    std::uint32_t minTileSlots = SlotTiles::kMinSlots;
+    /// Deferred forces: the cross pair p of tile t writes its second grain's share to entry
+    /// crossBase[t] + (p - crossBegin(t)); tiles + 1 entries.
+    std::vector<std::uint32_t> crossBase;
+    /// Gathering them: tile t adds entries gatherFrom[k] to slots gatherSlot[k] for k in
+    /// [gatherStart[t], gatherStart[t + 1]), in that order (by source tile, then pair).
+    std::vector<std::uint32_t> gatherStart, gatherFrom, gatherSlot;
+
+    std::uint32_t bucket(std::uint32_t tile, bool cross, std::uint32_t form) const noexcept {
+        return (2 * tile + (cross ? 1u : 0u)) * forms + form;
+    }
+    /// First entry of tile t in `l` (t = tiles.count: the end of the list).
+    std::uint32_t tileBegin(const ContactList& l, std::uint32_t tile) const noexcept {
+        return l.bucketStart[bucket(tile, false, 0)];
+    }
+    /// First cross pair of tile t in `pairs`.
+    std::uint32_t crossBegin(std::uint32_t tile) const noexcept {
+        return pairs.bucketStart[bucket(tile, true, 0)];
+    }
+    /// Cross pairs in all tiles (entries of the deferred-force buffer).
+    std::size_t crossPairs() const noexcept { return crossBase.empty() ? 0 : crossBase.back(); }
 
     /// True if some particle may have moved into range since the last rebuild: the largest
     /// displacement plus the wall travel exceeds skin/2 (or is not finite).
-    bool needsRebuild(const model::ParticleStore& s, Real skin, Real wallTravel) const noexcept;
+    bool needsRebuild(const model::ParticleStore& s, Real skin, Real wallTravel,
+                      int threads = 1) const noexcept;
     void commitHistory() noexcept {
         pairs.commitHistory();
         wallPairs.commitHistory();
@@ -67,21 +99,33 @@ public:
     /// `trialHistory` allocates trial springs for integrators with several force evaluations.
     void rebuild(const model::ParticleStore& s, const model::WallSet& walls, Real skin, Real time,
                  BroadPhase& broad, const LawTable& laws, const std::vector<std::uint32_t>& oldToNew,
-                 bool trialHistory);
+                 bool trialHistory, int threads = 1);
+    /// After the lists were read from a checkpoint: the tiles and forms of `particles` and `laws`,
+    /// and the cross-pair index. False when the bucket offsets do not fit them (a damaged file).
+    bool restoreLayout(std::size_t particles, const LawTable& laws);
 
     std::size_t memoryBytes() const noexcept {
-        return pairs.memoryBytes() + wallPairs.memoryBytes() + (x0.capacity() + y0.capacity()) * sizeof(Real);
+        return pairs.memoryBytes() + wallPairs.memoryBytes() +
+               (x0.capacity() + y0.capacity()) * sizeof(Real) +
+               (crossBase.capacity() + gatherStart.capacity() + gatherFrom.capacity() +
+                gatherSlot.capacity()) *
+                   4;
     }
     /// Particles were removed (ParticleStore::keep): drops their candidates and renumbers the
-    /// others through `oldToNew` (kRemovedSlot: removed). The renumbering keeps the slot order,
-    /// so buckets stay sorted and the history stays with its pairs; no broad phase is needed.
+    /// others through `oldToNew` (kRemovedSlot: removed), then regroups them by the tiles of the
+    /// new count (the renumbering keeps the slot order, so buckets stay sorted and the history
+    /// stays with its pairs); no broad phase is needed.
     void removeSlots(const std::vector<std::uint32_t>& oldToNew);
     /// Particles were appended from slot `first` on: adds their candidates (particles and wall
     /// segments within r + r' + 2 skin, so that the skin guarantee holds until the next rebuild
-    /// although the others have moved since theirs) at the end of their law-form buckets, with
-    /// empty history; no broad phase. O(N) per new particle.
+    /// although the others have moved since theirs) at the end of their buckets, with empty
+    /// history, regrouped by the tiles of the new count; no broad phase. O(N) per new particle.
     void appendParticles(const model::ParticleStore& s, const model::WallSet& walls, std::size_t first,
                          Real skin, const LawTable& laws, bool trialHistory);
+
+private:
+    /// Rebuilds crossBase and the gather index from `pairs` and `tiles`.
+    void indexCrossPairs();
 };
 
 }  // namespace granulab::dem

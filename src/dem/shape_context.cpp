@@ -4,11 +4,12 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 #include "dem/forces.hpp"
 
 namespace granulab::dem {
 
-void ShapeContext::update(const model::ParticleStore& s) {
+void ShapeContext::update(const model::ParticleStore& s, int threads) {
     if (!anyPolygon) return;
     GL_ASSERT(pool != nullptr, "shape pool set before the first update");
     const std::size_t n = s.size();
@@ -20,16 +21,18 @@ void ShapeContext::update(const model::ParticleStore& s) {
         if (s.shape[i] != model::kDiskShape) total += pool->count[s.shape[i]];
     }
     world.resize(total);
-    for (std::size_t i = 0; i < n; ++i) {
-        const std::uint32_t k = s.shape[i];
-        if (k == model::kDiskShape) continue;
-        const Real c = std::cos(s.angle[i]) * scale, sn = std::sin(s.angle[i]) * scale;  // s R(phi)
-        const Vec2 x{s.x[i], s.y[i]};
-        const Vec2* body = pool->corners.data() + pool->start[k];
-        Vec2* out = world.data() + first[i];
-        for (std::uint32_t m = 0; m < pool->count[k]; ++m)
-            out[m] = {x.x + (c * body[m].x - sn * body[m].y), x.y + (sn * body[m].x + c * body[m].y)};
-    }
+    parallelBlocks(threads, n, [&](std::size_t begin, std::size_t end, std::size_t) {
+        for (std::size_t i = begin; i < end; ++i) {
+            const std::uint32_t k = s.shape[i];
+            if (k == model::kDiskShape) continue;
+            const Real c = std::cos(s.angle[i]) * scale, sn = std::sin(s.angle[i]) * scale;  // s R(phi)
+            const Vec2 x{s.x[i], s.y[i]};
+            const Vec2* body = pool->corners.data() + pool->start[k];
+            Vec2* out = world.data() + first[i];
+            for (std::uint32_t m = 0; m < pool->count[k]; ++m)
+                out[m] = {x.x + (c * body[m].x - sn * body[m].y), x.y + (sn * body[m].x + c * body[m].y)};
+        }
+    });
 }
 
 }  // namespace granulab::dem

@@ -46,6 +46,10 @@ World::World(WorldConfig config, model::ParticleStore store, model::WallSet wall
       m_baseLaws(m_laws) {
     if (!m_broad) throw std::invalid_argument("unknown broad phase " + m_config.broadPhase);
     if (!m_integrator) throw std::invalid_argument("unknown integrator " + m_config.integrator.name);
+    m_config.threads = std::max(1, m_config.threads);
+    m_forceWork.threads = m_config.threads;
+    m_broad->setThreads(m_config.threads);
+    m_integrator->setThreads(m_config.threads);
     m_minRadius = m_store.size() ? *std::min_element(m_store.radius.begin(), m_store.radius.end()) : 1e300;
     m_shapes.anyPolygon = m_pool.size() > 0;
     for (const ParticleId id : m_store.id) m_nextId = std::max<ParticleId>(m_nextId, id + 1);
@@ -143,7 +147,7 @@ void World::evaluateForces(const BodyForces& body, const DriftVelocities& drift,
         log->step = m_step;
     }
     computeForces(m_store, m_walls, m_list, m_laws, body, drift, m_config.dt, trial, m_stats, m_wallForce,
-                  m_shapes, log);
+                  m_shapes, log, &m_forceWork);
 }
 
 void World::evaluateFieldForces(const BodyForces& body) {
@@ -185,7 +189,7 @@ void World::rebuildNeighbors() {
     }
     m_scaleAtRebuild = m_scale;
     m_list.rebuild(m_store, m_walls, m_config.skin, time(), *m_broad, m_laws, oldToNew,
-                   !m_integrator->singleEvaluation());
+                   !m_integrator->singleEvaluation(), m_config.threads);
     if (m_flow.active()) m_flow.refreshCandidates(m_store, m_maxRadius, m_config.skin);
 }
 
@@ -233,7 +237,7 @@ std::uint32_t World::step() {
         const Real growth = 2 * m_maxRadius * std::abs(m_scale - m_scaleAtRebuild) / m_scale;
         const Real wallTravel =
             m_walls.maxSpeedBetween(m_list.wallTime0, time()) * (time() - m_list.wallTime0) + growth;
-        if (m_list.needsRebuild(m_store, m_config.skin, wallTravel)) rebuildNeighbors();
+        if (m_list.needsRebuild(m_store, m_config.skin, wallTravel, m_config.threads)) rebuildNeighbors();
     }
     // 4+6+7: force evaluation(s) at the trial state and correction, until the integrator accepts.
     // Iterating integrators see trial springs; the accepted ones are committed once per step.
@@ -293,7 +297,8 @@ std::size_t World::memoryBytes() const noexcept {
 }
 
 namespace {
-constexpr std::uint64_t kStateMagic = 0x32454d44424c4e47ULL;  // "GNLBDME2"
+// "GNLBDME3": contact lists grouped by slot tiles (version 2: by law form only).
+constexpr std::uint64_t kStateMagic = 0x33454d44424c4e47ULL;
 
 void writeList(std::ostream& os, const ContactList& l) {
     writeVector(os, l.first);
@@ -336,7 +341,12 @@ void World::saveState(std::ostream& os) const {
 }
 
 void World::loadState(std::istream& is) {
-    if (readPod<std::uint64_t>(is) != kStateMagic) throw std::runtime_error("not a granulab DEM checkpoint");
+    const auto magic = readPod<std::uint64_t>(is);
+    if (magic == 0x32454d44424c4e47ULL)
+        throw std::runtime_error(
+            "a DEM checkpoint of an earlier granulab (before the threaded step); "
+            "rerun the scene from the start");
+    if (magic != kStateMagic) throw std::runtime_error("not a granulab DEM checkpoint");
     m_step = readPod<std::int64_t>(is);
     const std::size_t particles = m_store.size();
     m_store.load(is);
@@ -401,6 +411,8 @@ void World::loadState(std::istream& is) {
     while (m_lawChangesDone < m_config.lawChanges.size() &&
            m_config.lawChanges[m_lawChangesDone].step <= m_step)
         m_laws = m_config.lawChanges[m_lawChangesDone++].laws;
+    if (!m_list.restoreLayout(s.size(), m_laws))
+        throw std::runtime_error("checkpoint corrupt (contact list tiles)");
     m_minRadius = s.size() ? *std::min_element(s.radius.begin(), s.radius.end()) : 1e300;
     for (const Real r : s.radius) m_maxRadius = std::max(m_maxRadius, r);
     if (m_flow.active()) m_flow.refreshCandidates(m_store, m_maxRadius, m_config.skin);

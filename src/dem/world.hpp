@@ -46,7 +46,8 @@ struct WorldConfig {
     Real overlapGuard = 0;       ///< see BodyForces::overlapGuard
     IntegratorParams integrator;
     std::string broadPhase = "cell_grid";
-    std::vector<PullSpring> springs;                 ///< slots refer to the store given to the World
+    int threads = 1;                  ///< threads of the step (run.threads); the results do not depend on it
+    std::vector<PullSpring> springs;  ///< slots refer to the store given to the World
     std::optional<GravitySchedule> gravitySchedule;  ///< replaces `gravity` when set (gc2d 6.6)
     std::optional<SizeCycle> sizeCycle;              ///< global size scaling s(t) (gc2d 2.4)
     FlowConfig flow;                                 ///< sources, inlets, outlets (step 8)
@@ -131,6 +132,7 @@ public:
     const StageTimers<Stage>& timers() const noexcept { return m_timers; }
     const char* broadPhaseName() const noexcept { return m_broad->name(); }
     const char* integratorName() const noexcept { return m_integrator->name(); }
+    int threads() const noexcept { return m_config.threads; }
     /// The flow field series (nullptr without [fluid]) and the fluid forces' statistics of the
     /// last evaluation.
     const fluid::FieldSeries* field() const noexcept { return m_field.get(); }
@@ -177,6 +179,7 @@ private:
     std::unique_ptr<Integrator> m_integrator;
     NeighborList m_list;
     ForceStats m_stats;
+    ForceWorkspace m_forceWork;
     std::vector<Vec2> m_wallForce;
     ContactLog m_contactLog;
     bool m_recordContacts = false;

@@ -35,6 +35,9 @@ std::vector<std::string> engineNames(const std::vector<SceneSections>& engines) 
     return names;
 }
 
+/// Most threads run.threads accepts.
+constexpr std::int64_t kMaxThreads = 4096;
+
 /// Reads [run]; run.engine must name one of `engines`. Returns the running engine, nullptr when
 /// run.engine is not one of them (reported here), whose needsEndTime says whether run.end_time
 /// is required.
@@ -53,6 +56,15 @@ const SceneSections* readRun(TableReader& r, model::RunDef& run, const std::vect
     if (!r.number("end_time", run.endTime) && !r.table().get("end_time") && running && running->needsEndTime)
         r.diags().error(run.loc, "run.end_time", "missing: simulated end time [s], allowed (0, inf)");
     r.number("benchmark_from", run.benchmarkFrom);
+    std::int64_t threads = run.threads;
+    if (r.integer("threads", threads)) {
+        if (threads < 0 || threads > kMaxThreads)
+            r.diags().error(run.loc, "run.threads",
+                            fmt::format("{} threads: allowed 0 (every core this process may use) to {}",
+                                        threads, kMaxThreads));
+        else
+            run.threads = static_cast<int>(threads);
+    }
     r.string("title", run.title);
     return running;
 }

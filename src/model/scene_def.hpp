@@ -23,6 +23,7 @@ struct RunDef {
     std::uint64_t seed = 1;      ///< seed of every random draw in scene generation
     Real endTime = 0;  ///< [s] simulated time at which the run stops (edmd: or edmd.end_tau / end_collisions)
     Real benchmarkFrom = -1;  ///< [s] report throughput separately from this time on (<0: off)
+    int threads = 0;          ///< dem: threads of the step (0: every core the process may use)
     std::string title;
     SourceLoc loc;
 };

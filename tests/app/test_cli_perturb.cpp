@@ -22,7 +22,7 @@ namespace fs = std::filesystem;
 namespace {
 
 const std::string kPile =
-    "source[0].to=2.0 run.end_time=2.6 dem.dt=5e-6 'wall[0].points=[[-0.4,0.0],[-0.0075,0.0]]' "
+    "source[0].to=2.0 run.end_time=3.0 dem.dt=5e-6 'wall[0].points=[[-0.4,0.0],[-0.0075,0.0]]' "
     "'wall[1].points=[[-0.0075,0.0],[0.0075,0.0]]' 'wall[2].points=[[0.0075,0.0],[0.4,0.0]]'";
 constexpr double kG = 9.81;  // [m/s^2]
 
@@ -98,7 +98,9 @@ double median(std::vector<double> v) {
 
 TEST(Cli, PerturbedPileTapsWithdrawsAndUnloads) {
     test::ScratchDir dir;
-    // The saved pile: 201 drops in 2 s, 0.6 s to rest (kinetic energy ~1e-7 J of 0.86 J potential).
+    // The saved pile: 201 drops in 2 s, 1 s to rest (kinetic energy ~1e-6 J of 0.86 J potential).
+    // How long the last grains take depends on the realization: in one, a late grain rocked on the
+    // floor beside the pile until ~2.9 s (the area law dissipates little per corner impact).
     auto r = test::runGranulab(
         "run '" + scene() + "' -q --out pile --set " + kPile + " output.snapshot_interval=0.2", dir.path,
         600);
@@ -127,8 +129,8 @@ TEST(Cli, PerturbedPileTapsWithdrawsAndUnloads) {
     for (int w = 0; w < 3; ++w)
         taps += " 'wall[" + std::to_string(w) + "].vib_type=\"tapping\"' wall[" + std::to_string(w) +
                 "].vib_frequency=20.0 wall[" + std::to_string(w) + "].vib_width=1.0e-4 'wall[" +
-                std::to_string(w) + "].vib_window=[2.6,3.1]'";
-    resume(dir.path, "tap", "3.3", taps);
+                std::to_string(w) + "].vib_window=[3.0,3.5]'";
+    resume(dir.path, "tap", "3.7", taps);
     const Series tap = readSeries(dir.path / "tap/series.csv");
     const std::size_t tapEnd = tap.rows.size() - 1;
     const double h0 = pile.at(end, "potential_energy") / weight;
@@ -140,12 +142,12 @@ TEST(Cli, PerturbedPileTapsWithdrawsAndUnloads) {
     // 4.3.2 The stamp withdrawn at 1 mm/s to 0.3 mm (0.08 grain diameters). The thesis: p = dP/P0
     // reaches -0.7 at a displacement below one grain diameter, and the load goes into the floor
     // beside the stamp through an arch (measured here: -0.7 at 0.15 mm, -0.84 at the end).
-    resume(dir.path, "down", "2.9", "'wall[1].velocity=[0.0,-1.0e-3]'");
+    resume(dir.path, "down", "3.3", "'wall[1].velocity=[0.0,-1.0e-3]'");
     const Series down = readSeries(dir.path / "down/series.csv");
     const std::size_t downEnd = down.rows.size() - 1;
     EXPECT_NEAR(down.at(downEnd, "wall_stamp_dy"), -3e-4, 1e-6);
     double uAt07 = NAN;  // [m] displacement where p first reaches -0.7
-    for (std::size_t k = down.rowAt(2.6) + 1; k < down.rows.size() && std::isnan(uAt07); ++k)
+    for (std::size_t k = down.rowAt(3.0) + 1; k < down.rows.size() && std::isnan(uAt07); ++k)
         if (-down.at(k, "wall_stamp_fy") <= 0.3 * p0) uAt07 = down.at(k, "wall_stamp_dy");
     ASSERT_FALSE(std::isnan(uAt07)) << "p = -0.7 not reached by u = -0.3 mm";
     // Force balance at the end: the load the stamp shed is on the floor pieces.
@@ -153,7 +155,7 @@ TEST(Cli, PerturbedPileTapsWithdrawsAndUnloads) {
     EXPECT_LT(-down.at(downEnd, "wall_stamp_fy"), 0.3 * p0);
 
     // 4.3.3 Elastic constants: g lowered linearly to 2.45e-3 m/s^2 over 0.3 s, 0.1 s at rest;
-    // `granulab analyze strain` between the loaded (2.6 s) and the unloaded (3.0 s) pile on test
+    // `granulab analyze strain` between the loaded (3.0 s) and the unloaded (3.4 s) pile on test
     // areas of 3 x 3 grains (the pile is 7 grains high). The 2D compression modulus
     // K = E / (2 (1 + nu)(1 - 2 nu)) is the robust figure of a small pile (nu and E jump where
     // u_xx ~ u_zz; K = mean stress / volumetric strain does not). The thesis finds the pile two
@@ -161,10 +163,10 @@ TEST(Cli, PerturbedPileTapsWithdrawsAndUnloads) {
     // 1e7 N/m): K within one more order either way, [1e4, 1e6] N/m. nu: the thesis' 0.446 +-
     // 0.137 per area; the median of ~30 areas within [0.2, 0.7] (about two of its spreads).
     // Measured: K median 4.5e4 N/m, nu median 0.39 (9e4 and 0.41-0.49 on the 600-grain pile).
-    resume(dir.path, "elastic", "3.0",
+    resume(dir.path, "elastic", "3.4",
            "output.snapshot_interval=0.2 'gravity.type=\"linear\"' 'gravity.magnitude=[9.81,0.00245]' "
-           "'gravity.window=[2.6,2.9]'");
-    r = test::runGranulab("analyze elastic strain --at 2.6 --reference 3.0 --window 0.012 -q", dir.path, 120);
+           "'gravity.window=[3.0,3.3]'");
+    r = test::runGranulab("analyze elastic strain --at 3.0 --reference 3.4 --window 0.012 -q", dir.path, 120);
     ASSERT_EQ(r.status, 0) << r.output;
     fs::path snap;
     for (const auto& e : fs::directory_iterator(dir.path / "elastic/analysis"))

@@ -285,6 +285,7 @@ public:
             report.loopSeconds > 0 ? n * static_cast<double>(steps) / report.loopSeconds : 0.0;
         js["integrator"] = m_world.integratorName();
         js["broad_phase"] = m_world.broadPhaseName();
+        js["threads"] = m_world.threads();
         js["neighbor_builds"] = m_world.neighbors().builds;
         js["force_evaluations_per_step"] =
             m_world.stepIndex() > 0
