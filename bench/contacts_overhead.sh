@@ -7,8 +7,9 @@
 # touching disks compressed by gravity for 1000 steps). See bench/README.md "Analysis (issue 13)".
 #
 # Usage: bench/contacts_overhead.sh [-r REPEAT] [-k]
-# Env: GRANULAB (default <repo>/build/granulab).
+# Env: THREADS (granulab threads, default 1), GRANULAB (default <repo>/build/granulab).
 set -euo pipefail
+THREADS=${THREADS:-1}  # granulab threads (run.threads); 1: the serial kernel
 
 REPEAT=1 KEEP=0
 while getopts "r:kh" opt; do
@@ -35,7 +36,7 @@ on=() off=()
 for k in $(seq "$REPEAT"); do
     for contacts in true false; do
         rm -rf "run_$contacts"
-        "$GRANULAB" run "$BED" --out "run_$contacts" -q --set output.snapshot_interval=0.072 \
+        "$GRANULAB" run --threads "$THREADS" "$BED" --out "run_$contacts" -q --set output.snapshot_interval=0.072 \
             --set output.contacts=$contacts > /dev/null
         t=$(seconds "run_$contacts")
         [ "$contacts" = true ] && on+=("$t") || off+=("$t")
@@ -50,7 +51,7 @@ for contacts in true false; do
 done
 
 # (2) 1e5 disks (316 x 316) in contact: touching hexagonal bed compressed by gravity.
-"$GRANULAB" run "$BED" --out big -q --set run.end_time=0.1 --set run.benchmark_from=-1 \
+"$GRANULAB" run --threads "$THREADS" "$BED" --out big -q --set run.end_time=0.1 --set run.benchmark_from=-1 \
     --set 'block[0].region=[0.1,0.0,354.0,307.0]' --set 'block[0].radius={distribution="uniform",min=0.55,max=0.56}' \
     --set 'wall[0].points=[[0.0,400.0],[0.0,0.0],[355.0,0.0],[355.0,400.0]]' --set 'dem.damping=[]' \
     --set output.snapshot_interval=0.1 > /dev/null

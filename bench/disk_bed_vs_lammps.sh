@@ -1,34 +1,37 @@
 #!/usr/bin/env bash
 # Settled-bed throughput benchmark: granulab (examples/bench/disk_bed.toml) against LAMMPS
 # (../shared/peers/in.disk2d_bed.lmp, run unedited through bench/lammps/disk_bed_wrap.lmp),
-# serially, one after the other, on the same N = NX*NX disks. Prints throughput of the timed
+# one after the other, on the same N = NX*NX disks: serially, or (-p P) LAMMPS on P MPI ranks
+# (mpirun -np P --bind-to core) against granulab on P threads. Prints throughput of the timed
 # segment, whole-job wall times, final kinetic energies and bed heights of both, and a verdict.
 # See bench/README.md.
 #
-# Usage: bench/disk_bed_vs_lammps.sh [-n NX] [-r REPEATS] [-s SETTLE] [-t TSTEPS] [-k]
+# Usage: bench/disk_bed_vs_lammps.sh [-n NX] [-r REPEATS] [-s SETTLE] [-t TSTEPS] [-p P] [-k]
 #   -n NX       disks per row and number of rows (default 100 -> N = 10,000)
 #   -r REPEATS  run each code REPEATS times, report the median timings (default 1)
 #   -s SETTLE   damped settling steps (default 60000, as the peer file)
 #   -t TSTEPS   timed steps (default 10000, as the peer file)
+#   -p P        LAMMPS on P MPI ranks, granulab on P threads (default 1: both serial)
 #   -k          keep the work directory (printed at the end)
 # Env: PEER_DIR (folder of in.disk2d_bed.lmp; default <repo>/../shared/peers),
 #      GRANULAB (binary; default <repo>/build/granulab, built by scripts/setup.sh), LMP (default lmp),
 #      RESULTS_DIR (default <repo>/bench/results/<hostname>).
 set -euo pipefail
 
-NX=100 REPEATS=1 SETTLE=60000 TSTEPS=10000 KEEP=0
-while getopts "n:r:s:t:kh" opt; do
+NX=100 REPEATS=1 SETTLE=60000 TSTEPS=10000 KEEP=0 PROCS=1
+while getopts "n:r:s:t:p:kh" opt; do
     case $opt in
         n) NX=$OPTARG ;;
         r) REPEATS=$OPTARG ;;
         s) SETTLE=$OPTARG ;;
         t) TSTEPS=$OPTARG ;;
+        p) PROCS=$OPTARG ;;
         k) KEEP=1 ;;
-        h) sed -n '2,16p' "$0"; exit 0 ;;
-        *) sed -n '2,16p' "$0" >&2; exit 2 ;;
+        h) sed -n '2,18p' "$0"; exit 0 ;;
+        *) sed -n '2,18p' "$0" >&2; exit 2 ;;
     esac
 done
-for v in "$NX" "$REPEATS" "$SETTLE" "$TSTEPS"; do
+for v in "$NX" "$REPEATS" "$SETTLE" "$TSTEPS" "$PROCS"; do
     [[ $v =~ ^[1-9][0-9]*$ ]] || { echo "error: options need positive integers (got '$v')" >&2; exit 2; }
 done
 
@@ -45,6 +48,12 @@ RESULTS_DIR=${RESULTS_DIR:-"$ROOT/bench/results/$HOST"}
 [[ -f $PEER ]] || { echo "error: peer input not found: $PEER (set PEER_DIR)" >&2; exit 1; }
 [[ -x $GRANULAB ]] || { echo "error: granulab binary not found: $GRANULAB (build it with scripts/setup.sh, or set GRANULAB)" >&2; exit 1; }
 command -v "$LMP" >/dev/null || { echo "error: LAMMPS executable '$LMP' not found (set LMP)" >&2; exit 1; }
+LAUNCH=()  # LAMMPS on PROCS ranks; Open MPI refuses root unless told
+if ((PROCS > 1)); then
+    command -v mpirun >/dev/null || { echo "error: -p needs mpirun (apt-get install openmpi-bin)" >&2; exit 1; }
+    export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+    LAUNCH=(mpirun -np "$PROCS" --bind-to core)
+fi
 if busy=$(pgrep -af 'granulab_tests|granulab_bench|granulab run|lmp -in' 2>/dev/null) && [[ -n $busy ]]; then
     echo "warning: other jobs are running; timings may be disturbed:" >&2
     echo "$busy" | cut -c1-120 >&2
@@ -67,7 +76,8 @@ hf = ny * a * math.sqrt(3) / 2
 print(f'{nx*a+0.3:.10g} {hf:.10g} {nx*a+0.56:.10g} {max(400.0, 4*hf):.10g} '
       f'{(s+2000)*1e-4:.10g} {(s+2000+t)*1e-4:.10g} {s*1e-4:.10g}')")
 
-gset=(--set "block[0].region=[0.1,0.0,$XMAX,$YMAX]"
+gset=(--threads "$PROCS"
+      --set "block[0].region=[0.1,0.0,$XMAX,$YMAX]"
       --set "wall[0].points=[[0.0,$WTOP],[0.0,0.0],[$W,0.0],[$W,$WTOP]]"
       --set "dem.damping[0].to=$T_DAMP"
       --set "run.benchmark_from=$T_BENCH"
@@ -75,27 +85,41 @@ gset=(--set "block[0].region=[0.1,0.0,$XMAX,$YMAX]"
 
 now() { date +%s.%N; }
 
-echo "disk bed: N = $NX x $NY = $((NX * NY)) disks, settle $SETTLE + 2000 steps, timed $TSTEPS steps, $REPEATS repeat(s)"
+echo "disk bed: N = $NX x $NY = $((NX * NY)) disks, settle $SETTLE + 2000 steps, timed $TSTEPS steps, $REPEATS repeat(s), $PROCS rank(s) / thread(s)"
 for ((k = 1; k <= REPEATS; ++k)); do
     d="$WORK/rep$k"
     mkdir -p "$d/lammps"
-    echo "[$k/$REPEATS] LAMMPS ..." >&2
-    t0=$(now)
-    (cd "$d/lammps" && "$LMP" -in "$WRAP" -var peer "$PEER" -var dumpfile "$d/lammps/final.dump" \
-        -var nx "$NX" -var ny "$NY" -var settle "$SETTLE" -var tsteps "$TSTEPS" \
-        -log "$d/lammps/log.lammps" -screen none) ||
-        { echo "error: LAMMPS failed, see $d/lammps/log.lammps" >&2; KEEP=1; trap - EXIT; exit 1; }
-    t1=$(now)
-    echo "[$k/$REPEATS] granulab ..." >&2
-    "$GRANULAB" run "$SCENE" --out "$d/granulab" --quiet "${gset[@]}" ||
-        { echo "error: granulab failed (output in $d/granulab)" >&2; KEEP=1; trap - EXIT; exit 1; }
-    t2=$(now)
-    echo "$t0 $t1 $t2" > "$d/walls.txt"
+    run_lammps() {
+        echo "[$k/$REPEATS] LAMMPS ..." >&2
+        local t0 t1
+        t0=$(now)
+        (cd "$d/lammps" && "${LAUNCH[@]}" "$LMP" -in "$WRAP" -var peer "$PEER" -var dumpfile "$d/lammps/final.dump" \
+            -var nx "$NX" -var ny "$NY" -var settle "$SETTLE" -var tsteps "$TSTEPS" \
+            -log "$d/lammps/log.lammps" -screen none) ||
+            { echo "error: LAMMPS failed, see $d/lammps/log.lammps" >&2; KEEP=1; trap - EXIT; exit 1; }
+        t1=$(now)
+        wl=$(python3 -c "print($t1 - $t0)")
+    }
+    run_granulab() {
+        echo "[$k/$REPEATS] granulab ..." >&2
+        local t0 t1
+        t0=$(now)
+        "$GRANULAB" run "$SCENE" --out "$d/granulab" --quiet "${gset[@]}" ||
+            { echo "error: granulab failed (output in $d/granulab)" >&2; KEEP=1; trap - EXIT; exit 1; }
+        t1=$(now)
+        wg=$(python3 -c "print($t1 - $t0)")
+    }
+    # Alternate the order: a code that runs right after a long run on every core can find the
+    # machine slower (measured on the shared 2-core VM: granulab at half speed after LAMMPS).
+    if ((k % 2 == 1)); then run_lammps; run_granulab; else run_granulab; run_lammps; fi
+    echo "0 $wl $wg" > "$d/walls.txt"
 done
 
 mkdir -p "$RESULTS_DIR"
 rc=0
-python3 - "$WORK" "$REPEATS" "$NX" "$NY" "$RESULTS_DIR/disk_bed.csv" "$HOST" "$TSTEPS" <<'EOF' || rc=$?
+CSV="$RESULTS_DIR/disk_bed.csv"
+((PROCS == 1)) || CSV="$RESULTS_DIR/disk_bed_p$PROCS.csv"  # P ranks / threads: a table of its own
+python3 - "$WORK" "$REPEATS" "$NX" "$NY" "$CSV" "$HOST" "$TSTEPS" <<'EOF' || rc=$?
 import csv, datetime, json, math, os, re, statistics, sys
 
 work, reps, nx, ny, csv_path, host, tsteps = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), int(sys.argv[4]), sys.argv[5], sys.argv[6], int(sys.argv[7])
@@ -138,8 +162,8 @@ for k in range(1, reps + 1):
     d = os.path.join(work, f"rep{k}")
     L.append(lammps_log(os.path.join(d, "lammps", "log.lammps")))
     G.append(json.load(open(os.path.join(d, "granulab", "summary.json"))))
-    t0, t1, t2 = map(float, open(os.path.join(d, "walls.txt")).read().split())
-    wl.append(t1 - t0); wg.append(t2 - t1)
+    _, t_l, t_g = map(float, open(os.path.join(d, "walls.txt")).read().split())
+    wl.append(t_l); wg.append(t_g)
 
 d = os.path.join(work, f"rep{reps}")
 ld = lammps_dump(os.path.join(d, "lammps", "final.dump"))
@@ -181,7 +205,8 @@ def row(name, a, b, r=None, fmt="{:.4g}"):
     ra = "" if r is None else f"{r:9.3f}"
     print(f"  {name:<{w}} {fmt.format(a):>13} {fmt.format(b):>13} {ra:>9}")
 
-print(f"LAMMPS: {lg['version']} (serial, {lg['atoms']} atoms); granulab: {gs['version']} ({gs['integrator']}, {gs['broad_phase']})")
+procs = re.match(r"Loop time of \S+ on (\d+) procs", [l for l in open(os.path.join(d, "lammps", "log.lammps")) if l.startswith("Loop time of")][-1]).group(1)
+print(f"LAMMPS: {lg['version']} ({procs} MPI rank(s), {lg['atoms']} atoms); granulab: {gs['version']} ({gs['integrator']}, {gs['broad_phase']}, {gs.get('threads', 1)} thread(s))")
 med_note = f" (median of {reps})" if reps > 1 else ""
 print(f"  {'quantity':<{w}} {'granulab':>13} {'LAMMPS':>13} {'g/L':>9}")
 row(f"timed particle-steps/s{med_note}", tg, tl, tg / tl, "{:.4e}")

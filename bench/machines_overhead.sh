@@ -9,8 +9,9 @@
 # Usage: bench/machines_overhead.sh [-s STEPS] [-k]
 #   -s STEPS  steps (default 10000, dt = 8e-6 s: the bed falls 0.08 s and lands on the tiles)
 #   -k        keep the work directory
-# Env: GRANULAB (default <repo>/build/granulab).
+# Env: THREADS (granulab threads, default 1), GRANULAB (default <repo>/build/granulab).
 set -euo pipefail
+THREADS=${THREADS:-1}  # granulab threads (run.threads); 1: the serial kernel
 
 STEPS=10000 KEEP=0
 while getopts "s:kh" opt; do
@@ -112,7 +113,7 @@ vtk = false
 open(path, "w").write("\n".join(out))
 PY
 
-"$GRANULAB" run "$WORK/scene.toml" --out "$WORK/out" --overwrite -q
+"$GRANULAB" run --threads "$THREADS" "$WORK/scene.toml" --out "$WORK/out" --overwrite -q
 python3 - "$WORK/out/summary.json" <<'PY'
 import json, sys
 s = json.load(open(sys.argv[1]))

@@ -21,8 +21,9 @@
 #   -t TSTEPS  timed steps (default 10000, dt = 2e-6 s)
 #   -f         (default) also time the disks on the disk fast path; -s skips it
 #   -k         keep the work directory
-# Env: GRANULAB (default <repo>/build/granulab), RESULTS_DIR (default <repo>/bench/results/<hostname>).
+# Env: THREADS (granulab threads, default 1), GRANULAB (default <repo>/build/granulab), RESULTS_DIR (default <repo>/bench/results/<hostname>).
 set -euo pipefail
+THREADS=${THREADS:-1}  # granulab threads (run.threads); 1: the serial kernel
 
 NX=100 NY=25 TSTEPS=10000 FAST=1 KEEP=0
 while getopts "n:y:t:fskh" opt; do
@@ -76,9 +77,9 @@ disk=(--set "block[0].shape=disk" --set 'block[0].radius={distribution="uniform"
 
 echo "polygon vs disk: N = $NX x $NY = $((NX * NY)), land ~$T_LAND s, damped to $T_DAMP s, timed $T_BENCH..$T_END s ($TSTEPS steps)"
 echo "[1] polygons ..." >&2
-"$GRANULAB" run "$SCENE" --out "$WORK/poly" --quiet "${common[@]}" || { echo "error: polygon run failed ($WORK/poly)" >&2; KEEP=1; trap - EXIT; exit 1; }
+"$GRANULAB" run --threads "$THREADS" "$SCENE" --out "$WORK/poly" --quiet "${common[@]}" || { echo "error: polygon run failed ($WORK/poly)" >&2; KEEP=1; trap - EXIT; exit 1; }
 echo "[2] disks (same law, integrator, broad phase) ..." >&2
-"$GRANULAB" run "$SCENE" --out "$WORK/disk" --quiet "${common[@]}" "${disk[@]}" || { echo "error: disk run failed ($WORK/disk)" >&2; KEEP=1; trap - EXIT; exit 1; }
+"$GRANULAB" run --threads "$THREADS" "$SCENE" --out "$WORK/disk" --quiet "${common[@]}" "${disk[@]}" || { echo "error: disk run failed ($WORK/disk)" >&2; KEEP=1; trap - EXIT; exit 1; }
 if [[ $FAST == 1 ]]; then
     # The disk fast path needs another [[contact]] table (E is not a key of hooke), so write a copy
     # of the scene with it replaced.
@@ -99,7 +100,7 @@ assert n == 1
 open(sys.argv[2], "w").write(new)
 EOF
     echo "[3] disks (fast path: hooke, verlet, cell_grid) ..." >&2
-    "$GRANULAB" run "$WORK/fast.toml" --out "$WORK/fast" --quiet "${common[@]}" "${disk[@]}" \
+    "$GRANULAB" run --threads "$THREADS" "$WORK/fast.toml" --out "$WORK/fast" --quiet "${common[@]}" "${disk[@]}" \
         --set dem.integrator=verlet --set dem.broad_phase=cell_grid ||
         { echo "error: fast disk run failed ($WORK/fast)" >&2; KEEP=1; trap - EXIT; exit 1; }
 fi

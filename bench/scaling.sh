@@ -14,9 +14,10 @@
 #   -w WARMUP  untimed steps before the timed segment (default 500)
 #   -s STEPS   timed steps (default 2000)
 #   -k         keep the work directory
-# Env: GRANULAB (binary; default <repo>/build/granulab, built by scripts/setup.sh), RESULTS_DIR
+# Env: THREADS (granulab threads, default 1), GRANULAB (binary; default <repo>/build/granulab, built by scripts/setup.sh), RESULTS_DIR
 #      (default <repo>/bench/results/<hostname>).
 set -euo pipefail
+THREADS=${THREADS:-1}  # granulab threads (run.threads); 1: the serial kernel
 
 SIZES="10000 100000 1000000" WARMUP=500 STEPS=2000 KEEP=0
 while getopts "N:w:s:kh" opt; do
@@ -60,7 +61,7 @@ print(nx, ny, f'{0.5+(nx-0.25)*a:.10g} {hf:.10g} {0.5+nx*a:.10g} {max(400.0, 4*h
     d="$WORK/n$n"
     echo "  N = $n ($NX x $NY) ..." >&2
     t0=$(date +%s.%N)
-    "$GRANULAB" run "$SCENE" --out "$d" --quiet \
+    "$GRANULAB" run --threads "$THREADS" "$SCENE" --out "$d" --quiet \
         --set block[0].spacing=1.0 --set block[0].radius=0.5 --set "block[0].origin=[0.5,0.5]" \
         --set "block[0].region=[0.4,0.0,$XMAX,$YMAX]" --set block[0].temperature=0.0 \
         --set "dem.damping[0].to=$T_BENCH" \

@@ -7,6 +7,7 @@
 # granulab: two sharp squares of edge 4.5 stacked on the floor wall; F / overlap from the centres.
 # Runs a few seconds. Usage: bench/squares_calibration.sh   (env: GRANULAB, LMP)
 set -euo pipefail
+THREADS=${THREADS:-1}  # granulab threads (run.threads); 1: the serial kernel
 ROOT=$(git -C "$(dirname "$0")" rev-parse --show-toplevel)
 GRANULAB=${GRANULAB:-"$ROOT/build/granulab"}
 LMP=${LMP:-lmp}
@@ -80,7 +81,7 @@ material = "floor"
 [output]
 vtk = false
 TOML
-    "$GRANULAB" run "$WORK/two.toml" --out "$d" --quiet || { echo "error: granulab failed ($d)" >&2; exit 1; }
+    "$GRANULAB" run --threads "$THREADS" "$WORK/two.toml" --out "$d" --quiet || { echo "error: granulab failed ($d)" >&2; exit 1; }
     python3 - "$d/final.csv" "$g" "$coh" >> "$WORK/granulab.txt" <<'PY'
 import csv, sys
 r = list(csv.DictReader(open(sys.argv[1])))

@@ -11,10 +11,11 @@
 #   -r REPEATS  run each code REPEATS times, report the median timings (default 1)
 #   -s STEPS    steps of both runs (default 60000, as the peer file)
 #   -k          keep the work directory (printed at the end)
-# Env: PEER_DIR (folder of in.squares_pile.lmp and make_squares_pile.py; default <repo>/../shared/peers),
+# Env: THREADS (granulab threads, default 1), PEER_DIR (folder of in.squares_pile.lmp and make_squares_pile.py; default <repo>/../shared/peers),
 #      GRANULAB (binary; default <repo>/build/granulab), LMP (default lmp),
 #      RESULTS_DIR (default <repo>/bench/results/<hostname>).
 set -euo pipefail
+THREADS=${THREADS:-1}  # granulab threads (run.threads); 1: the serial kernel
 
 REPEATS=1 STEPS=60000 KEEP=0
 while getopts "r:s:kh" opt; do
@@ -67,7 +68,7 @@ for ((k = 1; k <= REPEATS; ++k)); do
         { echo "error: LAMMPS failed, see $d/lammps/log.lammps" >&2; KEEP=1; trap - EXIT; exit 1; }
     t1=$(now)
     echo "[$k/$REPEATS] granulab ..." >&2
-    "$GRANULAB" run "$SCENE" --out "$d/granulab" --quiet --set "run.end_time=$T_END" ||
+    "$GRANULAB" run --threads "$THREADS" "$SCENE" --out "$d/granulab" --quiet --set "run.end_time=$T_END" ||
         { echo "error: granulab failed (output in $d/granulab)" >&2; KEEP=1; trap - EXIT; exit 1; }
     t2=$(now)
     echo "$t0 $t1 $t2" > "$d/walls.txt"

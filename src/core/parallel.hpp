@@ -34,6 +34,8 @@ void parallelFor(int threads, std::size_t count, Fn&& fn) noexcept {
         for (std::int64_t k = 0; k < n; ++k) fn(static_cast<std::size_t>(k));
         return;
     }
+#else
+    (void)threads;
 #endif
     for (std::size_t k = 0; k < count; ++k) fn(k);
 }
@@ -61,7 +63,7 @@ void parallelBlocks(int threads, std::size_t n, Fn&& fn) noexcept {
     const auto run = [&](std::size_t b) { fn(n * b / blocks, n * (b + 1) / blocks, b); };
 #if GRANULAB_HAVE_OPENMP
     const auto count = static_cast<std::int64_t>(blocks);
-#pragma omp parallel for schedule(static, 1) num_threads(static_cast<int>(blocks))
+#pragma omp parallel for schedule(static, 1) num_threads(static_cast <int>(blocks))
     for (std::int64_t b = 0; b < count; ++b) run(static_cast<std::size_t>(b));
 #else
     for (std::size_t b = 0; b < blocks; ++b) run(b);
@@ -79,7 +81,9 @@ double parallelMax(int threads, std::size_t n, Fn&& fn) noexcept {
     constexpr int kMaxBlocks = 64;
     const int team = threads < kMaxBlocks ? threads : kMaxBlocks;
     double partial[kMaxBlocks] = {};
-    parallelBlocks(team, n, [&](std::size_t begin, std::size_t end, std::size_t block) { partial[block] = fn(begin, end); });
+    parallelBlocks(team, n, [&](std::size_t begin, std::size_t end, std::size_t block) {
+        partial[block] = fn(begin, end);
+    });
     double m = 0;
     for (std::size_t b = 0; b < blockCount(team, n); ++b) m = maxOrNaN(m, partial[b]);
     return m;

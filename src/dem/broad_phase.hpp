@@ -35,7 +35,8 @@ public:
     /// All (slot, segment) pairs with distance(centre, segment) < r + margin, sorted by key.
     virtual void findWallPairs(const model::ParticleStore& s, const model::WallSet& walls, Real margin,
                                std::vector<std::uint64_t>& out) = 0;
-    /// A slot order that groups nearby particles (for cache locality); empty = keep order.
+    /// A slot order that groups nearby particles (for cache locality and compact slot tiles);
+    /// empty = keep order. After applying it the caller calls slotsRenumbered.
     virtual std::vector<std::uint32_t> spatialOrder(const model::ParticleStore&) { return {}; }
     /// Bytes held between calls.
     virtual std::size_t memoryBytes() const noexcept { return 0; }
@@ -91,6 +92,11 @@ public:
     void findWallPairs(const model::ParticleStore& s, const model::WallSet& walls, Real margin,
                        std::vector<std::uint64_t>& out) override;
     std::size_t memoryBytes() const noexcept override;
+    /// The Morton order of CellGrid: the slot tiles of the threaded step need compact patches.
+    /// The World calls slotsRenumbered after it permuted the slots, which restarts the lists.
+    std::vector<std::uint32_t> spatialOrder(const model::ParticleStore& s) override {
+        return m_wallGrid.spatialOrder(s);
+    }
     void slotsRenumbered() override {
         m_xs.clear();
         m_ys.clear();

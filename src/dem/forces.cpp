@@ -72,12 +72,12 @@ void tileForces(std::uint32_t t, model::ParticleStore& s, const model::WallSet& 
     const std::uint32_t first = list.tiles.begin(t), last = list.tiles.end(t);
     bodyForces(s, body, first, last);
     springForces(s, body, first, last);
-    ForceStats& stats = ws.tileStats[t];
+    ForceStats& stats = ws.counters[t].stats;
     stats = ForceStats{};
-    geom::FeatureStats& features = ws.tileFeatures[t];
+    geom::FeatureStats& features = ws.counters[t].features;
     ContactLog* log = logging ? &ws.tileLogs[t] : nullptr;
     if (log) log->records.clear();
-    Vec2* wallForce = ws.tileWallForce.data() + static_cast<std::size_t>(t) * walls.walls.size();
+    Vec2* wallForce = ws.tileWallForce.data() + t * ws.wallStride;
     std::fill(wallForce, wallForce + walls.walls.size(), Vec2{});
     if (trialHistory) {  // every evaluation of a step starts from the accepted history
         startTrial(list.pairs, list.tileBegin(list.pairs, t), list.tileBegin(list.pairs, t + 1));
@@ -157,9 +157,10 @@ void computeForces(model::ParticleStore& s, const model::WallSet& walls, Neighbo
     const std::size_t nWalls = walls.walls.size();
     // Sized only when the tiles, the walls or the cross pairs grow (no allocation in steady state).
     ws.deferred.resize(list.crossPairs());
-    ws.tileStats.resize(tiles);
-    ws.tileFeatures.resize(tiles);
-    ws.tileWallForce.resize(static_cast<std::size_t>(tiles) * nWalls);
+    ws.counters.resize(tiles);
+    constexpr std::size_t kPerLine = 64 / sizeof(Vec2);
+    ws.wallStride = (nWalls + kPerLine - 1) / kPerLine * kPerLine;
+    ws.tileWallForce.resize(tiles * ws.wallStride);
     if (log && ws.tileLogs.size() < tiles) ws.tileLogs.resize(tiles);
     shapes.update(s, ws.threads);
     parallelFor(ws.threads, tiles, [&](std::size_t t) {
@@ -174,9 +175,9 @@ void computeForces(model::ParticleStore& s, const model::WallSet& walls, Neighbo
     for (auto& w : wallForce) w = Vec2{};
     if (log) log->records.clear();
     for (std::uint32_t t = 0; t < tiles; ++t) {
-        stats.add(ws.tileStats[t]);
-        for (std::size_t w = 0; w < nWalls; ++w) wallForce[w] += ws.tileWallForce[t * nWalls + w];
-        geom::FeatureStats& f = ws.tileFeatures[t];
+        stats.add(ws.counters[t].stats);
+        for (std::size_t w = 0; w < nWalls; ++w) wallForce[w] += ws.tileWallForce[t * ws.wallStride + w];
+        geom::FeatureStats& f = ws.counters[t].features;
         shapes.featureStats.evaluations += f.evaluations;
         shapes.featureStats.iterations += f.iterations;
         shapes.featureStats.coldStarts += f.coldStarts;

@@ -83,13 +83,22 @@ struct DeferredForce {
     Real torque;  ///< [N m]
 };
 
+/// Counters one tile's thread writes while it runs, on a cache line of its own (no false
+/// sharing between threads: the closest-feature counters change at every polygon pair).
+struct alignas(64) TileCounters {
+    ForceStats stats;
+    geom::FeatureStats features;
+};
+
 /// Scratch of the threaded force evaluation, kept between steps (sized when the tiles change).
 struct ForceWorkspace {
     int threads = 1;                      ///< threads of the evaluation
     std::vector<DeferredForce> deferred;  ///< one per cross pair
-    std::vector<ForceStats> tileStats;
-    std::vector<Vec2> tileWallForce;  ///< tiles x walls [N]
-    std::vector<geom::FeatureStats> tileFeatures;
+    std::vector<TileCounters> counters;   ///< one per tile
+    /// [N] force of each tile's contacts on each wall: tile t's block starts at t * wallStride
+    /// (a whole number of cache lines).
+    std::vector<Vec2> tileWallForce;
+    std::size_t wallStride = 0;
     std::vector<ContactLog> tileLogs;  ///< filled on the steps that record contacts
 };
 

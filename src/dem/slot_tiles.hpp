@@ -33,7 +33,9 @@ struct SlotTiles {
     }
     std::uint32_t tileOf(std::uint32_t slot) const noexcept { return slot / slotsPerTile; }
     std::uint32_t begin(std::uint32_t tile) const noexcept { return tile * slotsPerTile; }
-    std::uint32_t end(std::uint32_t tile) const noexcept { return std::min(slots, (tile + 1) * slotsPerTile); }
+    std::uint32_t end(std::uint32_t tile) const noexcept {
+        return std::min(slots, (tile + 1) * slotsPerTile);
+    }
 };
 
 }  // namespace granulab::dem

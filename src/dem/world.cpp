@@ -185,6 +185,7 @@ void World::rebuildNeighbors() {
             oldToNew.resize(order.size());
             for (std::size_t k = 0; k < order.size(); ++k) oldToNew[order[k]] = static_cast<std::uint32_t>(k);
             for (auto& sp : m_config.springs) sp.slot = oldToNew[sp.slot];
+            m_broad->slotsRenumbered();
         }
     }
     m_scaleAtRebuild = m_scale;

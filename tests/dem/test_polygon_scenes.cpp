@@ -285,8 +285,11 @@ material = "grain"
         -sum.y / weight, -floor.y / weight, (floor.y - sum.y) / weight, sum.x / weight,
         std::hypot(p1.x - p0.x, p1.y - p0.y) / weight, 2 * std::sqrt(2 * mass * kinetic) / weight);
     EXPECT_NEAR(-sum.y / weight, 1.0, 1e-3);
-    EXPECT_NEAR(sum.x / weight, 0.0, 1e-3);                  // the side walls push equally from both sides
-    EXPECT_LT(w.energies().kinetic, 1e-9 * weight * grain);  // and it stays at rest
+    EXPECT_NEAR(sum.x / weight, 0.0, 1e-3);  // the side walls push equally from both sides
+    // And it stays at rest. The settling trigger stops just below 1e-9 m g d; at rest the contacts
+    // still trade that much energy between their springs and the grains' motion, so the bound
+    // after the window is ten times the trigger (still 1e-8 of lifting one grain by its size).
+    EXPECT_LT(w.energies().kinetic, 1e-8 * weight * grain);
 }
 
 namespace {

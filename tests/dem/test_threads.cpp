@@ -115,14 +115,16 @@ Snapshot runOn(const std::string& toml, int threads, int steps, std::vector<io::
     return snapshotOf(w);
 }
 
-void expectSameOnAllThreadCounts(const std::string& toml, int steps, const std::vector<io::Override>& overrides,
-                                 std::size_t minTiles, std::uint64_t minContacts) {
+void expectSameOnAllThreadCounts(const std::string& toml, int steps,
+                                 const std::vector<io::Override>& overrides, std::size_t minTiles,
+                                 std::uint64_t minContacts) {
     const Snapshot one = runOn(toml, 1, steps, overrides);
     ASSERT_GT(one.ids.size(), 0u);
     EXPECT_GE(one.contacts, minContacts) << "too few contacts to test the force sums";
     // Enough slots for several tiles: otherwise the test would not exercise the cross pairs.
     ASSERT_GE(dem::SlotTiles::forParticles(one.ids.size()).count, minTiles);
-    for (const int threads : {2, 3, 4}) EXPECT_TRUE(runOn(toml, threads, steps, overrides) == one) << threads << " threads";
+    for (const int threads : {2, 3, 4})
+        EXPECT_TRUE(runOn(toml, threads, steps, overrides) == one) << threads << " threads";
 }
 
 }  // namespace
@@ -132,15 +134,16 @@ TEST(DemThreads, DiskBedWithRollingAndWallsIsBitIdentical) {
 }
 
 TEST(DemThreads, IteratingPredictorCorrectorIsBitIdentical) {
-    expectSameOnAllThreadCounts(kDiskBed, 150,
-                                {io::parseOverride("dem.integrator=\"pc\""), io::parseOverride("dem.pc_iterations=3")},
-                                8, 200);
+    expectSameOnAllThreadCounts(
+        kDiskBed, 150, {io::parseOverride("dem.integrator=\"pc\""), io::parseOverride("dem.pc_iterations=3")},
+        8, 200);
 }
 
 TEST(DemThreads, PolygonsWithGearAndSourceAreBitIdentical) {
     // A point-source pile of 7-gons on a body floor, fed fast from a pre-filled bed, so that grains
     // enter (the lists regrouped by the tiles of the new count) while 400 others are in contact.
-    const std::string pile = fileText(std::string(GRANULAB_SOURCE_DIR) + "/examples/machines/pile_dropsource.toml");
+    const std::string pile =
+        fileText(std::string(GRANULAB_SOURCE_DIR) + "/examples/machines/pile_dropsource.toml");
     const std::string bed = R"(
 [[block]]
 shape = "grain"
@@ -156,7 +159,8 @@ speed_range = [0.3, 0.6]   # random directions: the grains collide within the 60
 
 TEST(DemThreads, SiloDischargeThroughAnOutletIsBitIdentical) {
     // Particles leave through the orifice from the first steps: slots renumbered, lists regrouped.
-    const std::string silo = fileText(std::string(GRANULAB_SOURCE_DIR) + "/examples/machines/silo_discharge.toml");
+    const std::string silo =
+        fileText(std::string(GRANULAB_SOURCE_DIR) + "/examples/machines/silo_discharge.toml");
     const std::vector<io::Override> sets = {io::parseOverride("outlet[0].open_at=0.0"),
                                             io::parseOverride("outlet[1].region=[-1.0,-1.0,1.2,0.05]")};
     const Snapshot one = runOn(silo, 1, 300, sets);
@@ -217,11 +221,13 @@ void expectTilingsAgree(const dem::World& w, std::uint64_t minContacts) {
         EXPECT_NEAR(many.fy[i], one.fy[i], 1e-12 * scale) << i;
         EXPECT_NEAR(many.torque[i], one.torque[i], 1e-12 * scale) << i;
     }
-    for (std::size_t k = 0; k < wallOne.size(); ++k) EXPECT_NEAR(norm(wallMany[k] - wallOne[k]), 0, 1e-12 * scale);
+    for (std::size_t k = 0; k < wallOne.size(); ++k)
+        EXPECT_NEAR(norm(wallMany[k] - wallOne[k]), 0, 1e-12 * scale);
     // The same pairs, each with the same spring: sort both by key to compare.
     const auto springs = [](const dem::ContactList& l) {
         std::vector<std::pair<std::uint64_t, Real>> v;
-        for (std::size_t p = 0; p < l.size(); ++p) v.push_back({dem::pairKey(l.first[p], l.second[p]), l.xi[p]});
+        for (std::size_t p = 0; p < l.size(); ++p)
+            v.push_back({dem::pairKey(l.first[p], l.second[p]), l.xi[p]});
         std::sort(v.begin(), v.end());
         return v;
     };
@@ -237,7 +243,8 @@ TEST(DemThreads, ManyTilesChangeDiskForcesOnlyByRoundOff) {
 }
 
 TEST(DemThreads, ManyTilesChangePolygonForcesOnlyByRoundOff) {
-    const std::string pile = fileText(std::string(GRANULAB_SOURCE_DIR) + "/examples/machines/pile_dropsource.toml");
+    const std::string pile =
+        fileText(std::string(GRANULAB_SOURCE_DIR) + "/examples/machines/pile_dropsource.toml");
     dem::World w = test::makeWorldFromToml(pile + R"(
 [[block]]
 shape = "grain"

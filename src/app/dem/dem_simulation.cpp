@@ -286,6 +286,15 @@ public:
         js["integrator"] = m_world.integratorName();
         js["broad_phase"] = m_world.broadPhaseName();
         js["threads"] = m_world.threads();
+        {  // the work split of the threaded step (docs/physics/dem-threads.md)
+            const auto& list = m_world.neighbors();
+            js["tiles"] = {
+                {"count", list.tiles.count},
+                {"slots_per_tile", list.tiles.slotsPerTile},
+                {"cross_pair_fraction", list.pairs.size() ? static_cast<double>(list.crossPairs()) /
+                                                                static_cast<double>(list.pairs.size())
+                                                          : 0.0}};
+        }
         js["neighbor_builds"] = m_world.neighbors().builds;
         js["force_evaluations_per_step"] =
             m_world.stepIndex() > 0
