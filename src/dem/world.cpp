@@ -47,15 +47,27 @@ World::World(WorldConfig config, model::ParticleStore store, model::WallSet wall
     if (!m_broad) throw std::invalid_argument("unknown broad phase " + m_config.broadPhase);
     if (!m_integrator) throw std::invalid_argument("unknown integrator " + m_config.integrator.name);
     m_config.threads = std::max(1, m_config.threads);
-    m_forceWork.threads = m_config.threads;
-    m_broad->setThreads(m_config.threads);
-    m_integrator->setThreads(m_config.threads);
     m_minRadius = m_store.size() ? *std::min_element(m_store.radius.begin(), m_store.radius.end()) : 1e300;
     m_shapes.anyPolygon = m_pool.size() > 0;
     for (const ParticleId id : m_store.id) m_nextId = std::max<ParticleId>(m_nextId, id + 1);
     for (const Real r : m_store.radius) m_maxRadius = std::max(m_maxRadius, r);
     // The series owns the field source from here on (the config keeps the force parameters).
     if (m_config.fluid) m_field = std::make_unique<fluid::FieldSeries>(std::move(m_config.fluid->source));
+}
+
+int World::team() const noexcept {
+    const std::size_t perThread = m_particlesPerThread > 0 ? m_particlesPerThread
+                                  : m_shapes.anyPolygon    ? kPolygonsPerThread
+                                                           : kParticlesPerThread;
+    const std::size_t useful = std::max<std::size_t>(1, m_store.size() / perThread);
+    return static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(m_config.threads), useful));
+}
+
+void World::updateTeam() noexcept {
+    const int n = team();
+    m_forceWork.threads = n;
+    m_broad->setThreads(n);
+    m_integrator->setThreads(n);
 }
 
 Real World::totalMass() const noexcept {
@@ -137,6 +149,7 @@ void World::exchangeParticles() {
         m_list.appendParticles(m_store, m_walls, before, m_config.skin, m_laws,
                                !m_integrator->singleEvaluation());
     m_flow.refreshCandidates(m_store, m_maxRadius, m_config.skin);
+    updateTeam();
 }
 
 void World::evaluateForces(const BodyForces& body, const DriftVelocities& drift, bool trial) {
@@ -189,8 +202,9 @@ void World::rebuildNeighbors() {
         }
     }
     m_scaleAtRebuild = m_scale;
+    updateTeam();
     m_list.rebuild(m_store, m_walls, m_config.skin, time(), *m_broad, m_laws, oldToNew,
-                   !m_integrator->singleEvaluation(), m_config.threads);
+                   !m_integrator->singleEvaluation(), m_forceWork.threads);
     if (m_flow.active()) m_flow.refreshCandidates(m_store, m_maxRadius, m_config.skin);
 }
 
@@ -238,7 +252,7 @@ std::uint32_t World::step() {
         const Real growth = 2 * m_maxRadius * std::abs(m_scale - m_scaleAtRebuild) / m_scale;
         const Real wallTravel =
             m_walls.maxSpeedBetween(m_list.wallTime0, time()) * (time() - m_list.wallTime0) + growth;
-        if (m_list.needsRebuild(m_store, m_config.skin, wallTravel, m_config.threads)) rebuildNeighbors();
+        if (m_list.needsRebuild(m_store, m_config.skin, wallTravel, m_forceWork.threads)) rebuildNeighbors();
     }
     // 4+6+7: force evaluation(s) at the trial state and correction, until the integrator accepts.
     // Iterating integrators see trial springs; the accepted ones are committed once per step.
@@ -419,6 +433,7 @@ void World::loadState(std::istream& is) {
     if (m_flow.active()) m_flow.refreshCandidates(m_store, m_maxRadius, m_config.skin);
     // Wall forces of the restored step are re-derived at the next step; stats start empty.
     m_stats = ForceStats{};
+    updateTeam();
 }
 
 }  // namespace granulab::dem

@@ -133,6 +133,17 @@ public:
     const char* broadPhaseName() const noexcept { return m_broad->name(); }
     const char* integratorName() const noexcept { return m_integrator->name(); }
     int threads() const noexcept { return m_config.threads; }
+    /// Threads the step uses now: run.threads, but at most one per kParticlesPerThread particles
+    /// (kPolygonsPerThread with polygons), below which a thread costs more than it saves. The
+    /// results do not depend on it.
+    int team() const noexcept;
+    static constexpr std::size_t kParticlesPerThread = 1024;
+    static constexpr std::size_t kPolygonsPerThread = 256;
+    /// Replaces both limits of team() (tests run small scenes on several threads with it).
+    void setParticlesPerThread(std::size_t particles) noexcept {
+        m_particlesPerThread = particles;
+        updateTeam();
+    }
     /// The flow field series (nullptr without [fluid]) and the fluid forces' statistics of the
     /// last evaluation.
     const fluid::FieldSeries* field() const noexcept { return m_field.get(); }
@@ -154,6 +165,8 @@ public:
 
 private:
     void rebuildNeighbors();
+    /// Hands team() to the force workspace, the integrator and the broad phase.
+    void updateTeam() noexcept;
     void evaluateForces(const BodyForces& body, const DriftVelocities& drift, bool trial);
     /// Fluid forces and mutual attraction (after the contact forces; stage Fluid).
     void evaluateFieldForces(const BodyForces& body);
@@ -180,6 +193,7 @@ private:
     NeighborList m_list;
     ForceStats m_stats;
     ForceWorkspace m_forceWork;
+    std::size_t m_particlesPerThread = 0;  ///< 0: kParticlesPerThread / kPolygonsPerThread
     std::vector<Vec2> m_wallForce;
     ContactLog m_contactLog;
     bool m_recordContacts = false;
