@@ -70,6 +70,22 @@ std::string fileText(const std::string& path) {
     return ss.str();
 }
 
+/// examples/machines/pile_dropsource.toml (7-gons poured from a source onto a body floor) with 400
+/// grains more on a lattice above the floor, moving in random directions so that they collide
+/// within a few hundred steps.
+std::string pileWithBed() {
+    return fileText(std::string(GRANULAB_SOURCE_DIR) + "/examples/machines/pile_dropsource.toml") + R"(
+[[block]]
+shape = "grain"
+lattice = "hexagonal"
+spacing = 3.6e-3
+region = [-0.09, 0.0018, 0.09, 0.1]
+count = 400
+material = "sand"
+speed_range = [0.3, 0.6]
+)";
+}
+
 /// Every column of the state that the step writes, and the wall forces and contact count.
 struct Snapshot {
     std::vector<Real> columns;
@@ -144,19 +160,7 @@ TEST(DemThreads, IteratingPredictorCorrectorIsBitIdentical) {
 TEST(DemThreads, PolygonsWithGearAndSourceAreBitIdentical) {
     // A point-source pile of 7-gons on a body floor, fed fast from a pre-filled bed, so that grains
     // enter (the lists regrouped by the tiles of the new count) while 400 others are in contact.
-    const std::string pile =
-        fileText(std::string(GRANULAB_SOURCE_DIR) + "/examples/machines/pile_dropsource.toml");
-    const std::string bed = R"(
-[[block]]
-shape = "grain"
-lattice = "hexagonal"
-spacing = 3.6e-3
-region = [-0.09, 0.0018, 0.09, 0.1]
-count = 400
-material = "sand"
-speed_range = [0.3, 0.6]   # random directions: the grains collide within the 600 steps
-)";
-    expectSameOnAllThreadCounts(pile + bed, 600, {io::parseOverride("source[0].interval=5e-4")}, 3, 40);
+    expectSameOnAllThreadCounts(pileWithBed(), 600, {io::parseOverride("source[0].interval=5e-4")}, 3, 40);
 }
 
 TEST(DemThreads, SiloDischargeThroughAnOutletIsBitIdentical) {
@@ -245,18 +249,7 @@ TEST(DemThreads, ManyTilesChangeDiskForcesOnlyByRoundOff) {
 }
 
 TEST(DemThreads, ManyTilesChangePolygonForcesOnlyByRoundOff) {
-    const std::string pile =
-        fileText(std::string(GRANULAB_SOURCE_DIR) + "/examples/machines/pile_dropsource.toml");
-    dem::World w = test::makeWorldFromToml(pile + R"(
-[[block]]
-shape = "grain"
-lattice = "hexagonal"
-spacing = 3.6e-3
-region = [-0.09, 0.0018, 0.09, 0.1]
-count = 400
-material = "sand"
-speed_range = [0.3, 0.6]
-)");
+    dem::World w = test::makeWorldFromToml(pileWithBed());
     for (int k = 0; k < 600; ++k) w.step();
     expectTilingsAgree(w, 40);
 }
@@ -285,19 +278,7 @@ TEST(DemThreads, SceneAndCommandLineSetTheThreadCount) {
 TEST(DemThreads, ContactForcesCancelInPairsWhileGrainsEnter) {
     // Newton's third law through the tiles: after grains entered (lists regrouped, cross pairs
     // re-indexed), the forces on all grains add up to their weight minus what the walls carry.
-    const std::string pile =
-        fileText(std::string(GRANULAB_SOURCE_DIR) + "/examples/machines/pile_dropsource.toml");
-    dem::World w = test::makeWorldFromToml(pile + R"(
-[[block]]
-shape = "grain"
-lattice = "hexagonal"
-spacing = 3.6e-3
-region = [-0.09, 0.0018, 0.09, 0.1]
-count = 400
-material = "sand"
-speed_range = [0.3, 0.6]
-)",
-                                           {io::parseOverride("source[0].interval=5e-4")});
+    dem::World w = test::makeWorldFromToml(pileWithBed(), {io::parseOverride("source[0].interval=5e-4")});
     for (int k = 0; k < 3000; ++k) ASSERT_EQ(w.step(), dem::kStepOk);
     const auto& s = w.store();
     ASSERT_GT(s.size(), 400u);
