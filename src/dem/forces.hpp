@@ -125,6 +125,6 @@ void computeForces(model::ParticleStore& s, const model::WallSet& walls, Neighbo
 /// as F_n h_eff / 2 (exact for flat faces). `shapes`: the polygon shapes (world corners are
 /// computed here from the store).
 Real contactEnergy(const model::ParticleStore& s, const model::WallSet& walls, const NeighborList& list,
-                   const LawTable& laws, const model::ShapePool& shapes, Real scale = 1);
+                   const LawTable& laws, const model::ShapePool& shapes, Real scale = 1, int threads = 1);
 
 }  // namespace granulab::dem

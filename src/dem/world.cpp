@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "core/binary_io.hpp"
+#include "core/parallel.hpp"
 
 namespace granulab::dem {
 
@@ -285,16 +286,35 @@ std::uint32_t World::step() {
 }
 
 Energies World::energies() const noexcept {
-    Energies e;
     const auto& s = m_store;
     const Vec2 g = m_config.weight ? gravityAt(time()) : Vec2{};
-    for (std::size_t i = 0; i < s.size(); ++i) {
-        e.kinetic += 0.5 * s.mass[i] * (s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i]);
-        const Real inertia = s.invInertia[i] > 0 ? 1.0 / s.invInertia[i] : 0.0;
-        e.rotational += 0.5 * inertia * s.omega[i] * s.omega[i];
-        e.potential -= s.mass[i] * (g.x * s.x[i] + g.y * s.y[i]);
+    const auto sumSlots = [&](std::size_t begin, std::size_t end) {
+        Energies e;
+        for (std::size_t i = begin; i < end; ++i) {
+            e.kinetic += 0.5 * s.mass[i] * (s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i]);
+            const Real inertia = s.invInertia[i] > 0 ? 1.0 / s.invInertia[i] : 0.0;
+            e.rotational += 0.5 * inertia * s.omega[i] * s.omega[i];
+            e.potential -= s.mass[i] * (g.x * s.x[i] + g.y * s.y[i]);
+        }
+        return e;
+    };
+    Energies e;
+    const SlotTiles& tiles = m_list.tiles;
+    if (tiles.slots == s.size() && tiles.count > 1) {  // per-tile sums added in tile order
+        std::vector<Energies> partial(tiles.count);
+        parallelFor(m_forceWork.threads, tiles.count, [&](std::size_t t) {
+            partial[t] = sumSlots(tiles.begin(static_cast<std::uint32_t>(t)),
+                                  tiles.end(static_cast<std::uint32_t>(t)));
+        });
+        for (const Energies& p : partial) {
+            e.kinetic += p.kinetic;
+            e.rotational += p.rotational;
+            e.potential += p.potential;
+        }
+    } else {
+        e = sumSlots(0, s.size());
     }
-    e.elastic = contactEnergy(m_store, m_walls, m_list, m_laws, m_pool, m_scale);
+    e.elastic = contactEnergy(m_store, m_walls, m_list, m_laws, m_pool, m_scale, m_forceWork.threads);
     return e;
 }
 
