@@ -376,12 +376,21 @@ public:
         return js;
     }
 
+    /// "2 threads", or "1 of 2 threads" while the particles are too few to share (World::team).
+    std::string threadsNote() const {
+        const int asked = m_world.threads(), used = m_world.team();
+        if (used == asked) return fmt::format("{} thread{}", used, used == 1 ? "" : "s");
+        return fmt::format(
+            "{} of {} threads (at most one per {} particles)", used, asked,
+            m_world.shapes().size() > 0 ? dem::World::kPolygonsPerThread : dem::World::kParticlesPerThread);
+    }
+
     std::string banner(const std::string& dir) const override {
         return fmt::format(
-                   "granulab {}: {} particles, {} wall segments, dt = {:.4g} s, {} steps to t = {:.6g} s -> "
-                   "{}",
+                   "granulab {}: {} particles, {} wall segments, dt = {:.4g} s, {} steps to t = {:.6g} s, "
+                   "{} -> {}",
                    kVersion, m_world.store().size(), m_world.walls().segments.size(), m_dt,
-                   m_endStep - m_world.stepIndex(), m_scene.run.endTime, dir) +
+                   m_endStep - m_world.stepIndex(), m_scene.run.endTime, threadsNote(), dir) +
                (m_fieldsNote.empty() ? "" : "\nfluid: " + m_fieldsNote);
     }
 
