@@ -328,7 +328,10 @@ Vec2 World::momentum() const noexcept {
 std::size_t World::memoryBytes() const noexcept {
     return m_store.size() * model::ParticleStore::kBytesPerParticle + (m_field ? m_field->memoryBytes() : 0) +
            m_list.memoryBytes() + m_broad->memoryBytes() + m_integrator->memoryBytes() +
-           m_pool.memoryBytes() + m_shapes.world.capacity() * sizeof(Vec2) + m_shapes.first.capacity() * 4;
+           m_pool.memoryBytes() + m_shapes.world.capacity() * sizeof(Vec2) + m_shapes.first.capacity() * 4 +
+           m_forceWork.deferred.capacity() * sizeof(DeferredForce) +
+           m_forceWork.counters.capacity() * sizeof(TileCounters) +
+           m_forceWork.tileWallForce.capacity() * sizeof(Vec2);
 }
 
 namespace {
