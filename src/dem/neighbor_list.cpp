@@ -91,23 +91,35 @@ struct Layout {
     }
 };
 
+/// Stable counting sort: the position of entry k once the entries are grouped by bucketOf[k]
+/// (kRemovedSlot: dropped, position kRemovedSlot), keeping their order inside a bucket; `start`
+/// receives the buckets + 1 offsets.
+std::vector<std::uint32_t> placeInBuckets(const std::vector<std::uint32_t>& bucketOf, std::uint32_t buckets,
+                                          std::vector<std::uint32_t>& start) {
+    start.assign(buckets + std::size_t{1}, 0);
+    for (const std::uint32_t b : bucketOf)
+        if (b != kRemovedSlot) ++start[b + 1];
+    for (std::size_t b = 1; b < start.size(); ++b) start[b] += start[b - 1];
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    std::vector<std::uint32_t> pos(bucketOf.size(), kRemovedSlot);
+    for (std::size_t k = 0; k < bucketOf.size(); ++k)
+        if (bucketOf[k] != kRemovedSlot) pos[k] = fill[bucketOf[k]]++;
+    return pos;
+}
+
 /// Sorted keys grouped into the buckets of `layout` (stable: (first, second) order inside a
 /// bucket), with their history restored from `old`.
 template <class MaterialOfSecond>
 void fillList(ContactList& list, const std::vector<std::uint64_t>& keys, const std::vector<OldHistory>& old,
               const model::ParticleStore& s, const LawTable& laws, const Layout& layout, bool trialHistory,
               int threads, MaterialOfSecond materialOfSecond) {
-    list.bucketStart.assign(layout.bucketCount() + std::size_t{1}, 0);
-    std::vector<std::uint32_t> pos(keys.size());
+    std::vector<std::uint32_t> bucketOf(keys.size());
     for (std::size_t k = 0; k < keys.size(); ++k) {
         const std::uint32_t a = keyFirst(keys[k]), b = keySecond(keys[k]);
         const std::uint32_t f = laws.formCount() ? laws.formOf(s.material[a], materialOfSecond(b)) : 0;
-        pos[k] = layout.bucketOf(a, b, f);
-        ++list.bucketStart[pos[k] + 1];
+        bucketOf[k] = layout.bucketOf(a, b, f);
     }
-    for (std::size_t b = 1; b < list.bucketStart.size(); ++b) list.bucketStart[b] += list.bucketStart[b - 1];
-    std::vector<std::uint32_t> fill(list.bucketStart.begin(), list.bucketStart.end() - 1);
-    for (auto& p : pos) p = fill[p]++;
+    const std::vector<std::uint32_t> pos = placeInBuckets(bucketOf, layout.bucketCount(), list.bucketStart);
     list.first.resize(keys.size());
     list.second.resize(keys.size());
     list.xi.assign(keys.size(), 0.0);
@@ -149,14 +161,8 @@ std::vector<std::uint32_t> bucketsOfEntries(const ContactList& l) {
 /// (kRemovedSlot: dropped), keeping the order of the entries inside a bucket.
 void regroup(ContactList& l, const std::vector<std::uint32_t>& bucketOf, std::uint32_t buckets) {
     const std::size_t n = l.size();
-    std::vector<std::uint32_t> start(buckets + std::size_t{1}, 0);
-    for (std::size_t k = 0; k < n; ++k)
-        if (bucketOf[k] != kRemovedSlot) ++start[bucketOf[k] + 1];
-    for (std::size_t b = 1; b < start.size(); ++b) start[b] += start[b - 1];
-    std::vector<std::uint32_t> dest(n, kRemovedSlot);
-    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-    for (std::size_t k = 0; k < n; ++k)
-        if (bucketOf[k] != kRemovedSlot) dest[k] = fill[bucketOf[k]]++;
+    std::vector<std::uint32_t> start;
+    const std::vector<std::uint32_t> dest = placeInBuckets(bucketOf, buckets, start);
     const std::size_t kept = start.back();
     const auto move = [&](auto& col) {
         if (col.size() != n) return;
