@@ -17,7 +17,7 @@ namespace granulab::app {
 const std::vector<EngineEntry>& engineTable() {
     static const std::vector<EngineEntry> table = {
         {"dem", "time-driven soft-particle DEM in 2D: disks and convex polygons (gc2d, cfddem)",
-         io::demSceneSections, makeDemSimulation, demInfo, demAnalyze, ""},
+         io::demSceneSections, makeDemSimulation, demInfo, demAnalyze, "", true},
         {"edmd", "event-driven MD of inelastic hard disks and spheres (edmd)", io::edmdSceneSections,
          makeEdmdSimulation, edmdInfo, edmdAnalyze, "", true},
     };

@@ -24,6 +24,8 @@ struct DriftVelocities {
     const Real* omega = nullptr;
 };
 
+struct StateColumns;
+
 /// Parameters of all integrators (each uses its own).
 struct IntegratorParams {
     std::string name = "verlet";
@@ -55,6 +57,9 @@ public:
     /// State that must survive a checkpoint (default: none).
     virtual void save(std::ostream&) const {}
     virtual void load(std::istream&, std::size_t /*particles*/) {}
+    /// The per-particle state columns (nullptr: none), for moving particles between ranks.
+    virtual StateColumns* state() noexcept { return nullptr; }
+    const StateColumns* state() const noexcept { return const_cast<Integrator*>(this)->state(); }
     /// Threads of predict and correct (elementwise loops: the results do not depend on them).
     void setThreads(int threads) noexcept { m_threads = threads > 1 ? threads : 1; }
 
@@ -87,6 +92,7 @@ public:
     Real predict(model::ParticleStore& s, Real dt) noexcept override;
     bool correct(model::ParticleStore& s, Real dt, int iteration) noexcept override;
     DriftVelocities driftVelocities() const noexcept override { return {m_half[0], m_half[1], m_half[2]}; }
+    StateColumns* state() noexcept override { return &m_half; }
     void permute(const std::vector<std::uint32_t>& order) override { m_half.permute(order); }
     std::size_t memoryBytes() const noexcept override { return m_half.bytes(); }
 
@@ -102,6 +108,7 @@ public:
     Real predict(model::ParticleStore& s, Real dt) noexcept override;
     bool correct(model::ParticleStore& s, Real dt, int iteration) noexcept override;
     DriftVelocities driftVelocities() const noexcept override { return {m_old[0], m_old[1], m_old[2]}; }
+    StateColumns* state() noexcept override { return &m_old; }
     void permute(const std::vector<std::uint32_t>& order) override { m_old.permute(order); }
     std::size_t memoryBytes() const noexcept override { return m_old.bytes(); }
 
@@ -124,6 +131,7 @@ public:
     bool correct(model::ParticleStore& s, Real dt, int iteration) noexcept override;
     DriftVelocities driftVelocities() const noexcept override;
     bool singleEvaluation() const noexcept override { return m_maxIterations == 0; }
+    StateColumns* state() noexcept override { return &m_state; }
     void permute(const std::vector<std::uint32_t>& order) override { m_state.permute(order); }
     std::size_t memoryBytes() const noexcept override { return m_state.bytes(); }
 
@@ -148,6 +156,7 @@ public:
     DriftVelocities driftVelocities() const noexcept override {
         return {m_state[12], m_state[13], m_state[14]};
     }
+    StateColumns* state() noexcept override { return &m_state; }
     void permute(const std::vector<std::uint32_t>& order) override { m_state.permute(order); }
     std::size_t memoryBytes() const noexcept override { return m_state.bytes(); }
     void save(std::ostream& os) const override;

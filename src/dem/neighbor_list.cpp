@@ -38,25 +38,16 @@ bool NeighborList::needsRebuild(const model::ParticleStore& s, Real skin, Real w
 
 namespace {
 
-struct OldHistory {
-    std::uint64_t key;
-    Real xi;
-    Real zeta;
-    Real areaOld;
-    geom::FeatureCache features;
-    bool operator<(const OldHistory& o) const noexcept { return key < o.key; }
-};
-
 /// History entries of a list with a non-zero spring, keys mapped through oldToNew.
-std::vector<OldHistory> collectHistory(const ContactList& list, const std::vector<std::uint32_t>& oldToNew,
-                                       bool bothAreSlots) {
-    std::vector<OldHistory> out;
+std::vector<PairHistory> collectHistory(const ContactList& list, const std::vector<std::uint32_t>& oldToNew,
+                                        bool bothAreSlots) {
+    std::vector<PairHistory> out;
     for (std::size_t k = 0; k < list.size(); ++k) {
         const Real xi = list.xi[k];
         Real zeta = list.zeta.empty() ? 0.0 : list.zeta[k];
         const Real areaOld = list.areaOld.empty() ? 0.0 : list.areaOld[k];
         geom::FeatureCache features = list.features.empty() ? geom::FeatureCache{} : list.features[k];
-        if (xi == 0 && zeta == 0 && areaOld == 0 && features.state == geom::FeatureCache::Cold) continue;
+        if (PairHistory{0, xi, zeta, areaOld, features}.empty()) continue;
         std::uint32_t a = list.first[k], b = list.second[k];
         if (!oldToNew.empty()) {
             a = oldToNew[a];
@@ -110,7 +101,7 @@ std::vector<std::uint32_t> placeInBuckets(const std::vector<std::uint32_t>& buck
 /// Sorted keys grouped into the buckets of `layout` (stable: (first, second) order inside a
 /// bucket), with their history restored from `old`.
 template <class MaterialOfSecond>
-void fillList(ContactList& list, const std::vector<std::uint64_t>& keys, const std::vector<OldHistory>& old,
+void fillList(ContactList& list, const std::vector<std::uint64_t>& keys, const std::vector<PairHistory>& old,
               const model::ParticleStore& s, const LawTable& laws, const Layout& layout, bool trialHistory,
               int threads, MaterialOfSecond materialOfSecond) {
     std::vector<std::uint32_t> bucketOf(keys.size());
@@ -136,7 +127,7 @@ void fillList(ContactList& list, const std::vector<std::uint64_t>& keys, const s
             const std::uint32_t p = pos[k];
             list.first[p] = keyFirst(keys[k]);
             list.second[p] = keySecond(keys[k]);
-            auto it = std::lower_bound(old.begin(), old.end(), OldHistory{keys[k], 0, 0, 0, {}});
+            auto it = std::lower_bound(old.begin(), old.end(), PairHistory{keys[k], 0, 0, 0, {}});
             if (it != old.end() && it->key == keys[k]) {
                 list.xi[p] = it->xi;
                 if (rolling) list.zeta[p] = it->zeta;
@@ -300,12 +291,36 @@ void NeighborList::appendParticles(const model::ParticleStore& s, const model::W
 void NeighborList::rebuild(const model::ParticleStore& s, const model::WallSet& walls, Real skin, Real time,
                            BroadPhase& broad, const LawTable& laws,
                            const std::vector<std::uint32_t>& oldToNew, bool trialHistory, int threads) {
-    const auto oldPairs = collectHistory(pairs, oldToNew, true);
-    const auto oldWall = collectHistory(wallPairs, oldToNew, false);
+    rebuildWith(s, walls, skin, time, broad, laws, collectHistory(pairs, oldToNew, true),
+                collectHistory(wallPairs, oldToNew, false), trialHistory, threads);
+}
+
+std::vector<PairHistory> NeighborList::historyOf(const ContactList& l) {
+    std::vector<PairHistory> out;
+    for (std::size_t k = 0; k < l.size(); ++k) {
+        const PairHistory h{pairKey(l.first[k], l.second[k]), l.xi[k], l.zeta.empty() ? 0.0 : l.zeta[k],
+                            l.areaOld.empty() ? 0.0 : l.areaOld[k],
+                            l.features.empty() ? geom::FeatureCache{} : l.features[k]};
+        if (!h.empty()) out.push_back(h);
+    }
+    return out;
+}
+
+void NeighborList::rebuildWith(const model::ParticleStore& s, const model::WallSet& walls, Real skin,
+                               Real time, BroadPhase& broad, const LawTable& laws,
+                               const std::vector<PairHistory>& oldPairs,
+                               const std::vector<PairHistory>& oldWall, bool trialHistory, int threads) {
+    const auto dropGhosts = [&](std::vector<std::uint64_t>& keys) {  // keys sorted: first < second
+        if (ownedEnd >= s.size()) return;
+        keys.erase(std::remove_if(keys.begin(), keys.end(),
+                                  [&](std::uint64_t key) { return keyFirst(key) >= ownedEnd; }),
+                   keys.end());
+    };
     tiles = SlotTiles::forParticles(s.size(), minTileSlots);
     forms = std::max<std::uint32_t>(laws.formCount(), 1);
     std::vector<std::uint64_t> keys;
     broad.findPairs(s, skin, keys);
+    dropGhosts(keys);
     fillList(pairs, keys, oldPairs, s, laws, Layout{*this, tiles, true}, trialHistory, threads,
              [&](std::uint32_t j) { return s.material[j]; });
     broad.findWallPairs(s, walls, skin, keys);
@@ -320,6 +335,7 @@ void NeighborList::rebuild(const model::ParticleStore& s, const model::WallSet& 
         std::sort(keys.begin(), keys.end());
         keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
     }
+    dropGhosts(keys);
     fillList(wallPairs, keys, oldWall, s, laws, Layout{*this, tiles, false}, trialHistory, threads,
              [&](std::uint32_t seg) { return walls.segments[seg].material; });
     x0 = s.x;

@@ -53,6 +53,21 @@ struct ContactList {
 /// oldToNew entry of a removed particle.
 inline constexpr std::uint32_t kRemovedSlot = 0xFFFFFFFFu;
 
+/// The history of one list entry, keyed by pairKey(first, second) (slots; first < second for a
+/// particle pair, slot and segment for a wall pair): what a rebuild carries over.
+struct PairHistory {
+    std::uint64_t key = 0;
+    Real xi = 0;       ///< [m] tangential spring
+    Real zeta = 0;     ///< [m] rolling displacement (flips sign when the bodies are exchanged)
+    Real areaOld = 0;  ///< [m^2]
+    geom::FeatureCache features;
+    bool operator<(const PairHistory& o) const noexcept { return key < o.key; }
+    /// True when nothing is remembered (a pair that has not touched yet).
+    bool empty() const noexcept {
+        return xi == 0 && zeta == 0 && areaOld == 0 && features.state == geom::FeatureCache::Cold;
+    }
+};
+
 class NeighborList {
 public:
     ContactList pairs;         ///< particle-particle candidates
@@ -64,6 +79,9 @@ public:
     std::uint32_t forms = 1;  ///< law forms of the buckets (at least 1)
     /// Fewest slots per tile (SlotTiles::forParticles); tests set it to compare tilings.
     std::uint32_t minTileSlots = SlotTiles::kMinSlots;
+    /// Slots from ownedEnd on are ghosts of a domain decomposition (dem/parallel/): a rebuild
+    /// keeps no pair of two ghosts and no wall pair of a ghost, since their forces are not used.
+    std::uint32_t ownedEnd = 0xFFFFFFFFu;
     /// Deferred forces: the cross pair p of tile t writes its second grain's share to entry
     /// crossBase[t] + (p - crossBegin(t)); tiles + 1 entries.
     std::vector<std::uint32_t> crossBase;
@@ -100,6 +118,13 @@ public:
     void rebuild(const model::ParticleStore& s, const model::WallSet& walls, Real skin, Real time,
                  BroadPhase& broad, const LawTable& laws, const std::vector<std::uint32_t>& oldToNew,
                  bool trialHistory, int threads = 1);
+    /// Rebuilds both lists with the given history (sorted by key, in the slots of `s`; an entry
+    /// whose pair is no longer a candidate is dropped).
+    void rebuildWith(const model::ParticleStore& s, const model::WallSet& walls, Real skin, Real time,
+                     BroadPhase& broad, const LawTable& laws, const std::vector<PairHistory>& pairHistory,
+                     const std::vector<PairHistory>& wallHistory, bool trialHistory, int threads = 1);
+    /// The non-empty history of `l` (pairs or wallPairs) in list order.
+    static std::vector<PairHistory> historyOf(const ContactList& l);
     /// After the lists were read from a checkpoint: the tiles and forms of `particles` and `laws`,
     /// and the cross-pair index. False when the bucket offsets do not fit them (a damaged file).
     bool restoreLayout(std::size_t particles, const LawTable& laws);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <istream>
 #include <ostream>
+#include <sstream>
 #include <stdexcept>
 
 #include "core/binary_io.hpp"
@@ -97,7 +98,7 @@ void World::applyLawChanges() {
         m_laws = changes[m_lawChangesDone++].laws;
         changed = true;
     }
-    if (changed) rebuildNeighbors();  // the contact buckets follow the laws' forms
+    if (changed) m_lawRebuildDue = true;  // the contact buckets follow the laws' forms
 }
 
 void World::exchangeParticles() {
@@ -203,6 +204,7 @@ void World::rebuildNeighbors() {
         }
     }
     m_scaleAtRebuild = m_scale;
+    m_lawRebuildDue = false;
     updateTeam();
     m_list.rebuild(m_store, m_walls, m_config.skin, time(), *m_broad, m_laws, oldToNew,
                    !m_integrator->singleEvaluation(), m_forceWork.threads);
@@ -221,6 +223,16 @@ void World::initialize() {
 }
 
 std::uint32_t World::step() {
+    std::uint32_t status = beginStep();
+    if (status & kStepFieldFailed) return status;
+    {  // 2+3+5 neighbour check, broad phase and history transfer when needed
+        ScopedStage t(m_timers, Stage::Neighbors);
+        if (neighborsStale()) rebuildNeighbors();
+    }
+    return status | finishStep();
+}
+
+std::uint32_t World::beginStep() {
     const Real dt = m_config.dt;
     std::uint32_t status = kStepOk;
     Real maxSpeed;
@@ -247,14 +259,21 @@ std::uint32_t World::step() {
     // A particle, or a wall sweeping through particles, moving half a radius in one step tunnels.
     if ((maxSpeed + m_walls.maxSpeedBetween(time() - dt, time())) * dt > 0.5 * m_minRadius)
         status |= kStepTunnelling;
-    {  // 2+3+5 neighbour check, broad phase and history transfer when needed
-        ScopedStage t(m_timers, Stage::Neighbors);
-        // Walls sweeping towards particles, and particles grown since the rebuild, use up the skin.
-        const Real growth = 2 * m_maxRadius * std::abs(m_scale - m_scaleAtRebuild) / m_scale;
-        const Real wallTravel =
-            m_walls.maxSpeedBetween(m_list.wallTime0, time()) * (time() - m_list.wallTime0) + growth;
-        if (m_list.needsRebuild(m_store, m_config.skin, wallTravel, m_forceWork.threads)) rebuildNeighbors();
-    }
+    return status;
+}
+
+bool World::neighborsStale() const noexcept {
+    if (m_lawRebuildDue) return true;
+    // Walls sweeping towards particles, and particles grown since the rebuild, use up the skin.
+    const Real growth = 2 * m_maxRadius * std::abs(m_scale - m_scaleAtRebuild) / m_scale;
+    const Real wallTravel =
+        m_walls.maxSpeedBetween(m_list.wallTime0, time()) * (time() - m_list.wallTime0) + growth;
+    return m_list.needsRebuild(m_store, m_config.skin, wallTravel, m_forceWork.threads);
+}
+
+std::uint32_t World::finishStep() {
+    std::uint32_t status = kStepOk;
+    const Real dt = m_config.dt;
     // 4+6+7: force evaluation(s) at the trial state and correction, until the integrator accepts.
     // Iterating integrators see trial springs; the accepted ones are committed once per step.
     const bool trial = !m_integrator->singleEvaluation();
@@ -283,6 +302,79 @@ std::uint32_t World::step() {
         exchangeParticles();
     }
     return status;
+}
+
+void World::replaceParticles(model::ParticleStore store, const std::vector<Real>& integratorRows,
+                             const std::vector<PairHistory>& pairHistory,
+                             const std::vector<PairHistory>& wallHistory, std::size_t ownedEnd,
+                             bool outputCopy) {
+    m_store = std::move(store);
+    const std::size_t n = m_store.size();
+    if (StateColumns* state = m_integrator->state()) {
+        const std::size_t k = state->columns.size();
+        state->resize(n);
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t c = 0; c < k; ++c) state->columns[c][i] = integratorRows[i * k + c];
+    }
+    m_broad->slotsRenumbered();
+    m_list.ownedEnd = static_cast<std::uint32_t>(std::min<std::size_t>(ownedEnd, 0xFFFFFFFFu));
+    m_scaleAtRebuild = m_scale;
+    m_lawRebuildDue = false;
+    updateTeam();
+    m_list.rebuildWith(m_store, m_walls, m_config.skin, time(), *m_broad, m_laws, pairHistory, wallHistory,
+                       outputCopy || !m_integrator->singleEvaluation(), m_forceWork.threads);
+}
+
+std::size_t World::integratorColumns() const noexcept {
+    const StateColumns* state = m_integrator->state();
+    return state ? state->columns.size() : 0;
+}
+
+void World::integratorRow(std::size_t k, Real* out) const noexcept {
+    const StateColumns* state = m_integrator->state();
+    if (!state) return;
+    for (std::size_t c = 0; c < state->columns.size(); ++c)
+        out[c] = k < state->columns[c].size() ? state->columns[c][k] : 0.0;
+}
+
+void World::setIntegratorRow(std::size_t k, const Real* in) noexcept {
+    StateColumns* state = m_integrator->state();
+    if (!state) return;
+    for (std::size_t c = 0; c < state->columns.size(); ++c)
+        if (k < state->columns[c].size()) state->columns[c][k] = in[c];
+}
+
+void World::adoptClock(const World& local) {
+    m_step = local.m_step;
+    m_forceEvaluations = local.m_forceEvaluations;
+    m_walls = local.m_walls;
+    m_scale = local.m_scale;
+    m_shapes.scale = local.m_shapes.scale;
+    m_scaleAtRebuild = local.m_scaleAtRebuild;
+    m_minRadius = local.m_minRadius;
+    m_maxRadius = local.m_maxRadius;
+    m_laws = local.m_laws;
+    m_lawChangesDone = local.m_lawChangesDone;
+    m_list.builds = local.m_list.builds;
+    m_timers = local.m_timers;
+    m_wallForce = local.m_wallForce;
+    std::stringstream flags;  // the integrator's flags (gear: started); its columns follow the particles
+    local.m_integrator->save(flags);
+    m_integrator->load(flags, local.m_store.size());
+}
+
+void World::evaluateForOutput() {
+    const BodyForces body = bodyForcesAt(m_step);
+    const std::vector<Real> fx = m_store.fx, fy = m_store.fy, torque = m_store.torque;
+    const std::vector<Vec2> wallForce = m_wallForce;
+    if (m_list.pairs.xiTrial.size() != m_list.pairs.size() ||
+        m_list.wallPairs.xiTrial.size() != m_list.wallPairs.size())
+        return;  // the lists were built without trial columns: nothing may be written
+    evaluateForces(body, DriftVelocities{}, true);  // trial columns: the accepted history stays
+    m_store.fx = fx;
+    m_store.fy = fy;
+    m_store.torque = torque;
+    m_wallForce = wallForce;
 }
 
 Energies World::energies() const noexcept {

@@ -99,8 +99,48 @@ public:
     /// First neighbour build and force evaluation (skipped after loadState). Throws
     /// std::runtime_error when the flow field of t cannot be loaded.
     void initialize();
-    /// Advances one step; returns StepStatus flags.
+    /// Advances one step; returns StepStatus flags. It is beginStep, neighborsStale and
+    /// rebuildNeighbors when stale, then finishStep: a domain decomposition (dem/parallel/) runs
+    /// those parts itself, with its halo exchange between them.
     std::uint32_t step();
+
+    // ---- The step in parts ----------------------------------------------------------------
+    /// Stage 1 (predict) and the scene updaters before the forces; StepStatus flags.
+    std::uint32_t beginStep();
+    /// Stage 2: true when the lists must be rebuilt before the forces (skin used up, law change).
+    bool neighborsStale() const noexcept;
+    /// Stages 3+5: broad phase and history transfer (with a spatial re-sort every k-th time).
+    void rebuildNeighbors();
+    /// Stages 4, 6, 7 and the particles in and out; StepStatus flags.
+    std::uint32_t finishStep();
+
+    // ---- Domain decomposition (dem/parallel/domain_world.hpp) -------------------------------
+    /// Replaces every particle by `store`, whose slots from `ownedEnd` on are ghosts (their
+    /// forces are not used and they have no wall contacts), sets the integrator state from
+    /// `integratorRows` (integratorColumns() values per slot, slot after slot) and rebuilds the
+    /// lists with the given history (keys in the new slots). Radius bounds, ids, walls and the
+    /// clock are kept. `outputCopy`: the lists get trial columns, for evaluateForOutput.
+    void replaceParticles(model::ParticleStore store, const std::vector<Real>& integratorRows,
+                          const std::vector<PairHistory>& pairHistory,
+                          const std::vector<PairHistory>& wallHistory, std::size_t ownedEnd,
+                          bool outputCopy = false);
+    /// Values of per-particle integrator state (0 for an integrator without any).
+    std::size_t integratorColumns() const noexcept;
+    /// Copies slot k's integrator state to out[0 .. integratorColumns()) (zeros before the first step).
+    void integratorRow(std::size_t k, Real* out) const noexcept;
+    /// Sets slot k's integrator state (a ghost's, from its owner).
+    void setIntegratorRow(std::size_t k, const Real* in) noexcept;
+    /// The particle state, for the halo exchange (ghost slots only are written).
+    model::ParticleStore& storeForHalo() noexcept { return m_store; }
+    /// Wall forces of all ranks (the halo sums them after the forces).
+    std::vector<Vec2>& wallForceForSum() noexcept { return m_wallForce; }
+    /// The gathered copy of a decomposed run: takes the step, walls, size scale, laws, counters
+    /// and integrator flags of `local` (one rank's world of the same scene).
+    void adoptClock(const World& local);
+    /// Evaluates the forces of the current state for outputs only: statistics, wall forces and,
+    /// when recordContacts is on, the contact log; the particles' forces and the accepted
+    /// history are kept (the springs are not advanced: the drift is zero).
+    void evaluateForOutput();
 
     std::int64_t stepIndex() const noexcept { return m_step; }
     Real time() const noexcept { return static_cast<Real>(m_step) * m_config.dt; }
@@ -121,6 +161,8 @@ public:
     Vec2 gravity() const noexcept { return gravityAt(time()); }
     /// Total mass of the particles [kg].
     Real totalMass() const noexcept;
+    /// [m] largest radius since t = 0 at the current size scale.
+    Real maxRadius() const noexcept { return m_maxRadius; }
     /// Current global size scale s (1 without [size_scaling]).
     Real sizeScale() const noexcept { return m_scale; }
     /// Total contact force [N] on each wall at the last force evaluation.
@@ -164,7 +206,6 @@ public:
     void loadState(std::istream& is);
 
 private:
-    void rebuildNeighbors();
     /// Hands team() to the force workspace, the integrator and the broad phase.
     void updateTeam() noexcept;
     void evaluateForces(const BodyForces& body, const DriftVelocities& drift, bool trial);
@@ -205,6 +246,7 @@ private:
     ParticleFlow m_flow;
     ParticleId m_nextId = 0;           ///< id of the next inserted particle
     std::size_t m_lawChangesDone = 0;  ///< entries of m_config.lawChanges applied
+    bool m_lawRebuildDue = false;      ///< a law change regroups the lists before the next forces
     LawTable m_baseLaws;               ///< the laws of t = 0
     Real m_scale = 1;                  ///< global size scale s of the radius column and corners
     Real m_scaleAtRebuild = 1;         ///< s at the last neighbour rebuild

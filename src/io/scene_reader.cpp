@@ -65,6 +65,7 @@ const SceneSections* readRun(TableReader& r, model::RunDef& run, const std::vect
         else
             run.threads = static_cast<int>(threads);
     }
+    r.boolean("load_balance", run.loadBalance);
     r.string("title", run.title);
     return running;
 }

@@ -24,6 +24,7 @@ struct RunDef {
     Real endTime = 0;  ///< [s] simulated time at which the run stops (edmd: or edmd.end_tau / end_collisions)
     Real benchmarkFrom = -1;  ///< [s] report throughput separately from this time on (<0: off)
     int threads = 0;          ///< dem: threads of the step (0: every core the process may use)
+    bool loadBalance = true;  ///< dem under mpirun: move the slab cuts by contacts (docs/physics/dem-mpi.md)
     std::string title;
     SourceLoc loc;
 };

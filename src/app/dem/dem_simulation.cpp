@@ -14,8 +14,10 @@
 #include "app/dem/dem_fluid.hpp"
 #include "app/dem/particle_series.hpp"
 #include "app/simulation_options.hpp"
+#include "core/communicator.hpp"
 #include "core/interrupt.hpp"
 #include "core/version.hpp"
+#include "dem/parallel/domain_world.hpp"
 #include "dem/setup.hpp"
 #include "dem/step_clock.hpp"
 #include "io/csv_writers.hpp"
@@ -42,13 +44,23 @@ public:
           m_world(dem::makeWorld(scene, prepared.initial, std::move(prepared.fields))),
           m_dt(scene.dem.dt),
           m_endStep(dem::stepsIn(scene.run.endTime, scene.dem.dt)),
-          m_initialParticles(m_world.store().size()) {}
+          m_initialParticles(m_world.store().size()) {
+        if (worldCommunicator().size() >
+            1) {  // domain decomposition: this rank's part comes from a whole world
+            checkDecomposable(scene);
+            m_whole.emplace(dem::makeWorld(scene, prepared.initial));
+        }
+    }
 
-    double time() const override { return m_world.time(); }
-    std::uint64_t count() const override { return static_cast<std::uint64_t>(m_world.stepIndex()); }
+    double time() const override { return m_domain ? m_domain->time() : m_world.time(); }
+    std::uint64_t count() const override { return static_cast<std::uint64_t>(currentStep()); }
     std::string progressUnit() const override { return "steps"; }
-    std::size_t particles() const override { return m_world.store().size(); }
-    std::size_t memoryBytes() const override { return m_world.memoryBytes(); }
+    std::size_t particles() const override {
+        return m_domain ? m_domain->particles() : m_world.store().size();
+    }
+    std::size_t memoryBytes() const override {
+        return m_domain ? m_domain->memoryBytes() : m_world.memoryBytes();
+    }
     std::vector<std::string> warnings() const override {
         std::vector<std::string> w = m_warnings;
         if (m_guardSkips > 0)
@@ -82,6 +94,11 @@ public:
     }
 
     std::uint32_t start() override {
+        if (m_whole) {  // several ranks (no flow fields: checkDecomposable)
+            m_whole->initialize();
+            decompose();
+            return kSimOk;
+        }
         m_world.recordContacts(wantsContacts());  // the t = 0 snapshot's contacts
         try {
             m_world.initialize();
@@ -101,9 +118,10 @@ public:
     /// Whether the state after step `s` is written as a snapshot (the periodic ones and the end).
     bool endsAtSnapshot(std::int64_t s) const { return s % snapshotEvery() == 0 || s == m_endStep; }
 
-    void beginLoop() override { m_loopStartStep = m_world.stepIndex(); }
+    void beginLoop() override { m_loopStartStep = currentStep(); }
 
     std::uint32_t advance(const Stop& stop) override {
+        if (m_domain) return advanceOnRanks(stop);
         while (static_cast<std::uint64_t>(m_world.stepIndex()) < stop.count) {
             if (interruptRequested()) return kSimInterrupted;  // between whole steps
             if (wantsContacts()) m_world.recordContacts(endsAtSnapshot(m_world.stepIndex() + 1));
@@ -209,6 +227,13 @@ public:
     }
 
     std::vector<double> seriesRow() override {
+        if (m_domain) {  // collective: the gathered copy on the root; its energy decides health() everywhere
+            view();
+            double total = worldCommunicator().root() ? m_world.energies().total() : 0.0;
+            worldCommunicator().allSum(std::span<double>(&total, 1));
+            m_lastEnergy = {total, 0, 0, 0};
+            if (!worldCommunicator().root()) return {};
+        }
         const auto e = m_world.energies();
         const auto& st = m_world.forceStats();
         std::vector<double> row = {m_world.time(),
@@ -255,6 +280,7 @@ public:
     }
 
     void snapshot(const std::string& dir, int index, io::PvdWriter& pvd) override {
+        if (m_domain && (view(), !worldCommunicator().root())) return;
         if (m_particleSeries) m_particleSeries->flush();
         if (!m_scene.output.vtk) return;
         io::writeSnapshot(dir, index, m_world.store(), m_world.shapes(), m_world.walls(), m_world.time(),
@@ -267,12 +293,14 @@ public:
     }
 
     void writeFinal(const std::string& dir) override {
+        if (m_domain && (view(), !worldCommunicator().root())) return;
         io::writeFinalCsv(dir + "/final.csv", m_world.store(), m_world.shapes(),
                           model::materialNames(m_scene), model::massModelOf(m_scene.dem.massModel),
                           fluidFinalColumns(m_world));
     }
 
     nlohmann::json summaryKeys(const RunReport& report) override {
+        if (m_domain && (view(), !worldCommunicator().root())) return {};
         const double n = static_cast<double>(m_world.store().size());
         const std::int64_t steps = m_world.stepIndex() - m_loopStartStep;
         nlohmann::json js;
@@ -286,6 +314,8 @@ public:
         js["integrator"] = m_world.integratorName();
         js["broad_phase"] = m_world.broadPhaseName();
         js["threads"] = m_world.threads();
+        js["ranks"] = worldCommunicator().size();
+        if (m_domain) js["domains"] = domainKeys();
         {  // the work split of the threaded step (docs/physics/dem-threads.md)
             const auto& list = m_world.neighbors();
             js["tiles"] = {
@@ -436,10 +466,92 @@ public:
                           fmt::format("{:.17g} s", m_scene.run.endTime)});
         return id;
     }
-    void saveState(std::ostream& out) override { m_world.saveState(out); }
-    void loadState(std::istream& in) override { m_world.loadState(in); }
+    /// Several ranks: the gathered copy in the one-rank format, so that any rank count resumes it.
+    void saveState(std::ostream& out) override {
+        if (m_domain && (view(), !worldCommunicator().root())) return;
+        m_world.saveState(out);
+    }
+    void loadState(std::istream& in) override {
+        if (!m_whole) return m_world.loadState(in);
+        m_whole->loadState(in);
+        decompose();
+    }
 
 private:
+    std::int64_t currentStep() const noexcept {
+        return m_domain ? m_domain->stepIndex() : m_world.stepIndex();
+    }
+
+    /// The engine features that run on one rank only for now: a clear refusal (exit status 2).
+    static void checkDecomposable(const model::SceneDef& scene) {
+        std::vector<std::string> missing;
+        const auto& m = scene.machines;
+        if (!m.sources.empty() || !m.inlets.empty() || !m.outlets.empty())
+            missing.push_back("particle sources, inlets and outlets");
+        if (scene.fluid.present) missing.push_back("[fluid]");
+        if (scene.attraction.present) missing.push_back("[attraction]");
+        if (!scene.springs.empty()) missing.push_back("pull springs");
+        if (dem::integratorOf(scene) == "pc" && scene.dem.pcIterations > 0)
+            missing.push_back("the iterating predictor-corrector (dem.pc_iterations > 0)");
+        if (missing.empty()) return;
+        std::string list;
+        for (const auto& f : missing) list += (list.empty() ? "" : ", ") + f;
+        Diagnostics d;
+        d.error(scene.run.loc, "mpirun",
+                fmt::format("this scene uses {}, which run on one MPI rank only in this version; "
+                            "run it without mpirun (threads: run.threads)",
+                            list));
+        d.throwIfAny();
+    }
+
+    /// Hands the whole world (initialised or loaded) to the domain decomposition; the adapter's
+    /// own world becomes the gathered copy for outputs (empty until the first gather).
+    void decompose() {
+        dem::DomainConfig config;
+        config.balance = m_scene.run.loadBalance;
+        m_domain = std::make_unique<dem::DomainWorld>(worldCommunicator(), std::move(*m_whole), config);
+        m_whole.reset();
+        m_world.replaceParticles({}, {}, {}, {}, 0);
+        m_world.recordContacts(wantsContacts());
+        m_viewFresh = false;
+    }
+
+    /// The gathered copy of a decomposed run, refreshed once per stop (collective).
+    void view() {
+        if (!m_domain || m_viewFresh) return;
+        m_domain->gather(m_world);
+        m_viewFresh = true;
+    }
+
+    std::uint32_t advanceOnRanks(const Stop& stop) {
+        while (static_cast<std::uint64_t>(m_domain->stepIndex()) < stop.count) {
+            const std::uint32_t status = m_domain->step(interruptRequested());
+            m_viewFresh = false;
+            if (status != dem::kStepOk)
+                return (status & dem::kStepNonFinite ? kSimNonFinite : 0u) |
+                       (status & dem::kStepTunnelling ? kSimUnstable : 0u) |
+                       (status & dem::kStepDeepOverlap ? kSimOverlap : 0u);
+            if (m_domain->stopRequested()) return kSimInterrupted;  // every rank after the same step
+        }
+        return kSimOk;
+    }
+
+    nlohmann::json domainKeys() const {
+        const dem::DomainStats& st = m_domain->stats();
+        const dem::SlabPartition& part = m_domain->partition();
+        return {{"axis", part.axis == 0 ? "x" : "y"},
+                {"cuts_m", part.cuts},
+                {"load_balance", m_scene.run.loadBalance},
+                {"exchanges", st.exchanges},
+                {"rebalances", st.rebalances},
+                {"imbalance", st.imbalance},
+                {"mean_imbalance", st.exchanges ? st.imbalanceSum / static_cast<double>(st.exchanges) : 1.0},
+                {"halo_share", st.haloShare},
+                {"root_halo_s", st.haloSeconds},
+                {"root_exchange_s", st.exchangeSeconds},
+                {"root_reduce_s", st.reduceSeconds}};
+    }
+
     /// What `granulab analyze` reads from summary.json besides the snapshot files: the wall names
     /// in wall-index order (`--wall`, the floor) and |g| [m/s^2] now.
     nlohmann::json analysisKeys() const {
@@ -468,7 +580,10 @@ private:
     std::string m_fieldsNote;  ///< [fluid]: what the fields are (banner, summary)
     std::string m_inputError;  ///< why a flow field could not be loaded (kSimInputFailed)
     std::unique_ptr<ParticleSeries> m_particleSeries;  ///< output.particle_series (cfddem 6.6)
-    dem::World m_world;
+    dem::World m_world;  ///< the engine on one rank; on several, the gathered copy for outputs (root)
+    std::optional<dem::World> m_whole;           ///< several ranks: the whole scene until it is split
+    std::unique_ptr<dem::DomainWorld> m_domain;  ///< several ranks: this rank's part
+    bool m_viewFresh = false;                    ///< m_world holds the state of the current step
     Real m_dt;
     std::int64_t m_endStep;
     std::size_t

@@ -1,0 +1,553 @@
+// SPDX-License-Identifier: MIT
+// The DEM domain decomposition (dem/parallel/domain_world.hpp; docs/physics/dem-mpi.md).
+#include "dem/parallel/domain_world.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <numeric>
+#include <stdexcept>
+#include <utility>
+
+#include "core/timer.hpp"
+
+namespace granulab::dem {
+
+namespace {
+
+/// One particle as it travels between ranks: every column of the ParticleStore.
+struct ParticleRecord {
+    Real x, y, vx, vy, angle, omega, fx, fy, torque, radius, mass, invMass, invInertia;
+    ParticleId id;
+    std::uint32_t material, shape;
+    std::int32_t owner;  ///< the rank that owns it after the exchange
+};
+
+/// Contact history keyed by particle ids (slots differ on every rank): a < b for a pair (the
+/// roles as in a list whose first slot holds a), id and segment for a wall pair.
+struct IdHistory {
+    ParticleId a, b;
+    std::int32_t fromOwnerOfA;  ///< sent by the owner of a: preferred when two ranks send the pair
+    std::int32_t pad = 0;
+    Real xi, zeta, areaOld;
+    geom::FeatureCache features;
+};
+
+ParticleRecord recordOf(const model::ParticleStore& s, std::size_t k, int owner) {
+    return {s.x[k],      s.y[k],      s.vx[k],     s.vy[k],          s.angle[k],  s.omega[k],
+            s.fx[k],     s.fy[k],     s.torque[k], s.radius[k],      s.mass[k],   s.invMass[k],
+            s.invInertia[k], s.id[k], s.material[k], s.shape[k], owner};
+}
+
+void appendRecord(model::ParticleStore& s, const ParticleRecord& r) {
+    s.x.push_back(r.x);
+    s.y.push_back(r.y);
+    s.vx.push_back(r.vx);
+    s.vy.push_back(r.vy);
+    s.angle.push_back(r.angle);
+    s.omega.push_back(r.omega);
+    s.fx.push_back(r.fx);
+    s.fy.push_back(r.fy);
+    s.torque.push_back(r.torque);
+    s.radius.push_back(r.radius);
+    s.mass.push_back(r.mass);
+    s.invMass.push_back(r.invMass);
+    s.invInertia.push_back(r.invInertia);
+    s.material.push_back(r.material);
+    s.id.push_back(r.id);
+    s.shape.push_back(r.shape);
+}
+
+/// Entry k of a particle-pair list in ids, lower id first (exchanging the bodies flips the
+/// rolling displacement and the feature roles; the tangential spring is unchanged:
+/// neighbor_list.cpp collectHistory).
+IdHistory pairHistoryById(const model::ParticleStore& s, const PairHistory& h, bool fromOwnerOfLower,
+                          bool& lowerIsFirst) {
+    const std::uint32_t first = keyFirst(h.key), second = keySecond(h.key);
+    IdHistory r{s.id[first], s.id[second], 0, 0, h.xi, h.zeta, h.areaOld, h.features};
+    lowerIsFirst = r.a < r.b;
+    if (!lowerIsFirst) {
+        std::swap(r.a, r.b);
+        r.zeta = -r.zeta;
+        r.features = r.features.swapped();
+    }
+    r.fromOwnerOfA = fromOwnerOfLower ? 1 : 0;
+    return r;
+}
+
+/// Byte message: counts, then arrays of plain records.
+class MessageWriter {
+public:
+    template <class T>
+    void put(const std::vector<T>& values) {
+        const std::uint64_t n = values.size();
+        append(&n, sizeof n);
+        append(values.data(), values.size() * sizeof(T));
+    }
+    ByteBuffer take() { return std::move(m_bytes); }
+
+private:
+    void append(const void* p, std::size_t n) {
+        const std::size_t at = m_bytes.size();
+        m_bytes.resize(at + n);
+        if (n) std::memcpy(m_bytes.data() + at, p, n);
+    }
+    ByteBuffer m_bytes;
+};
+
+class MessageReader {
+public:
+    explicit MessageReader(const ByteBuffer& b) : m_bytes(b) {}
+    template <class T>
+    void appendTo(std::vector<T>& out) {
+        std::uint64_t n = 0;
+        read(&n, sizeof n);
+        const std::size_t at = out.size();
+        out.resize(at + n);
+        read(out.data() + at, n * sizeof(T));
+    }
+
+private:
+    void read(void* p, std::size_t n) {
+        if (m_at + n > m_bytes.size()) throw std::runtime_error("domain exchange: a truncated message");
+        if (n) std::memcpy(p, m_bytes.data() + m_at, n);
+        m_at += n;
+    }
+    const ByteBuffer& m_bytes;
+    std::size_t m_at = 0;
+};
+
+/// Interleaves the bits of two 16-bit cell coordinates (a Z curve: nearby cells, nearby keys).
+std::uint32_t mortonKey(std::uint32_t cx, std::uint32_t cy) noexcept {
+    std::uint32_t key = 0;
+    for (int b = 0; b < 16; ++b)
+        key |= ((cx >> b) & 1u) << (2 * b) | ((cy >> b) & 1u) << (2 * b + 1);
+    return key;
+}
+
+/// Slot-keyed history of the pairs whose both ids are in `slotOfId` (sorted id, slot), preferring
+/// the record of a's owner when two ranks sent the same pair.
+std::vector<PairHistory> pairHistoryInSlots(std::vector<IdHistory> records,
+                                            const std::vector<std::pair<ParticleId, std::uint32_t>>& slotOfId) {
+    std::sort(records.begin(), records.end(), [](const IdHistory& p, const IdHistory& q) {
+        if (p.a != q.a) return p.a < q.a;
+        if (p.b != q.b) return p.b < q.b;
+        return p.fromOwnerOfA > q.fromOwnerOfA;
+    });
+    const auto slotOf = [&](ParticleId id) {
+        auto it = std::lower_bound(slotOfId.begin(), slotOfId.end(), std::pair<ParticleId, std::uint32_t>{id, 0});
+        return it != slotOfId.end() && it->first == id ? it->second : kRemovedSlot;
+    };
+    std::vector<PairHistory> out;
+    for (std::size_t k = 0; k < records.size(); ++k) {
+        if (k > 0 && records[k].a == records[k - 1].a && records[k].b == records[k - 1].b) continue;
+        IdHistory r = records[k];
+        std::uint32_t sa = slotOf(r.a), sb = slotOf(r.b);
+        if (sa == kRemovedSlot || sb == kRemovedSlot) continue;
+        if (sa > sb) {
+            std::swap(sa, sb);
+            r.zeta = -r.zeta;
+            r.features = r.features.swapped();
+        }
+        out.push_back({pairKey(sa, sb), r.xi, r.zeta, r.areaOld, r.features});
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+std::vector<PairHistory> wallHistoryInSlots(const std::vector<IdHistory>& records,
+                                            const std::vector<std::pair<ParticleId, std::uint32_t>>& slotOfId) {
+    std::vector<PairHistory> out;
+    for (const IdHistory& r : records) {
+        auto it = std::lower_bound(slotOfId.begin(), slotOfId.end(), std::pair<ParticleId, std::uint32_t>{r.a, 0});
+        if (it == slotOfId.end() || it->first != r.a) continue;
+        out.push_back({pairKey(it->second, r.b), r.xi, r.zeta, r.areaOld, r.features});
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+std::vector<std::pair<ParticleId, std::uint32_t>> slotsById(const model::ParticleStore& s) {
+    std::vector<std::pair<ParticleId, std::uint32_t>> v(s.size());
+    for (std::size_t k = 0; k < s.size(); ++k) v[k] = {s.id[k], static_cast<std::uint32_t>(k)};
+    std::sort(v.begin(), v.end());
+    return v;
+}
+
+IdHistory wallHistoryById(const model::ParticleStore& s, const PairHistory& h) {
+    return {s.id[keyFirst(h.key)], keySecond(h.key), 1, 0, h.xi, h.zeta, h.areaOld, h.features};
+}
+
+}  // namespace
+
+struct DomainWorld::Incoming {
+    std::vector<ParticleRecord> owned, ghosts;
+    std::vector<Real> ownedRows, ghostRows;  ///< integrator state, m_integratorColumns per record
+    std::vector<IdHistory> pairs, walls;
+};
+
+DomainWorld::DomainWorld(Communicator& comm, World whole, DomainConfig config)
+    : m_comm(comm), m_world(std::move(whole)), m_config(config) {
+    const model::ParticleStore& s = m_world.store();
+    const int ranks = comm.size(), me = comm.rank();
+    m_particles = s.size();
+    m_integratorColumns = m_world.integratorColumns();
+    m_owned = s.size();  // every particle, for the first weights
+    Real lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+    for (std::size_t k = 0; k < s.size(); ++k) {
+        lo[0] = std::min(lo[0], s.x[k]);
+        hi[0] = std::max(hi[0], s.x[k]);
+        lo[1] = std::min(lo[1], s.y[k]);
+        hi[1] = std::max(hi[1], s.y[k]);
+    }
+    const int axis = hi[1] - lo[1] > hi[0] - lo[0] ? 1 : 0;  // slabs across the longer extent
+    if (m_config.balance && ranks > 1) {
+        // Every rank holds every particle: the root's alone make the histogram.
+        const std::vector<Real> weights = me == 0 ? workWeights() : std::vector<Real>{};
+        const std::vector<Real>& coords = axis == 0 ? s.x : s.y;
+        m_partition = balancedSlabs(comm, axis, std::span<const Real>(coords.data(), me == 0 ? coords.size() : 0),
+                                    weights);
+    } else {
+        m_partition = uniformSlabs(axis, lo[axis], hi[axis], ranks);
+    }
+    const Real halo = haloWidth();
+    const std::size_t k = m_integratorColumns;
+    std::vector<Real> row(k);
+    Incoming in;
+    std::vector<char> kept(s.size(), 0);
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        const Real c = axis == 0 ? s.x[i] : s.y[i];
+        const int owner = m_partition.owner(c);
+        bool ghost = false;
+        if (owner != me) m_partition.forGhostRanks(c, halo, owner, [&](int r) { ghost = ghost || r == me; });
+        if (owner != me && !ghost) continue;
+        kept[i] = 1;
+        m_world.integratorRow(i, row.data());
+        (owner == me ? in.owned : in.ghosts).push_back(recordOf(s, i, owner));
+        auto& rows = owner == me ? in.ownedRows : in.ghostRows;
+        rows.insert(rows.end(), row.begin(), row.end());
+    }
+    bool lowerIsFirst = true;
+    for (const PairHistory& h : NeighborList::historyOf(m_world.neighbors().pairs))
+        if (kept[keyFirst(h.key)] && kept[keySecond(h.key)])
+            in.pairs.push_back(pairHistoryById(s, h, true, lowerIsFirst));
+    for (const PairHistory& h : NeighborList::historyOf(m_world.neighbors().wallPairs))
+        if (kept[keyFirst(h.key)]) in.walls.push_back(wallHistoryById(s, h));
+    assemble(std::move(in));
+}
+
+std::vector<Real> DomainWorld::workWeights() const {
+    std::vector<Real> w(m_owned, 1.0);
+    const NeighborList& list = m_world.neighbors();
+    for (std::size_t p = 0; p < list.pairs.size(); ++p) {
+        if (list.pairs.first[p] < m_owned) w[list.pairs.first[p]] += 1;
+        if (list.pairs.second[p] < m_owned) w[list.pairs.second[p]] += 1;
+    }
+    for (std::size_t p = 0; p < list.wallPairs.size(); ++p)
+        if (list.wallPairs.first[p] < m_owned) w[list.wallPairs.first[p]] += 1;
+    return w;
+}
+
+double DomainWorld::measureImbalance() {
+    const std::vector<Real> w = workWeights();
+    const double mine = std::accumulate(w.begin(), w.end(), 0.0);
+    const std::vector<double> all = m_comm.allGather(std::span<const double>(&mine, 1));
+    const double most = *std::max_element(all.begin(), all.end());
+    const double mean = std::accumulate(all.begin(), all.end(), 0.0) / static_cast<double>(all.size());
+    return mean > 0 ? most / mean : 1.0;
+}
+
+void DomainWorld::assemble(Incoming in) {
+    const int axis = m_partition.axis;
+    const Real halo = haloWidth();
+    const std::size_t k = m_integratorColumns;
+    // Owned particles along a Z curve of halo-sized cells (compact tiles), ghosts by owner and id.
+    Real lo[2] = {1e300, 1e300};
+    for (const ParticleRecord& r : in.owned) {
+        lo[0] = std::min(lo[0], r.x);
+        lo[1] = std::min(lo[1], r.y);
+    }
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> order(in.owned.size());
+    for (std::size_t i = 0; i < in.owned.size(); ++i) {
+        const auto cell = [&](Real v, Real from) {
+            return static_cast<std::uint32_t>(std::clamp<Real>((v - from) / halo, 0, 65535));
+        };
+        const std::uint64_t key = mortonKey(cell(in.owned[i].x, lo[0]), cell(in.owned[i].y, lo[1]));
+        order[i] = {key << 32 | in.owned[i].id, static_cast<std::uint32_t>(i)};
+    }
+    std::sort(order.begin(), order.end());
+    std::vector<std::uint32_t> ghostOrder(in.ghosts.size());
+    std::iota(ghostOrder.begin(), ghostOrder.end(), 0u);
+    std::sort(ghostOrder.begin(), ghostOrder.end(), [&](std::uint32_t p, std::uint32_t q) {
+        const ParticleRecord &a = in.ghosts[p], &b = in.ghosts[q];
+        return a.owner != b.owner ? a.owner < b.owner : a.id < b.id;
+    });
+    model::ParticleStore store;
+    store.reserve(in.owned.size() + in.ghosts.size());
+    std::vector<Real> rows;
+    rows.reserve((in.owned.size() + in.ghosts.size()) * k);
+    for (const auto& [key, i] : order) {
+        appendRecord(store, in.owned[i]);
+        rows.insert(rows.end(), in.ownedRows.begin() + static_cast<std::ptrdiff_t>(i * k),
+                    in.ownedRows.begin() + static_cast<std::ptrdiff_t>((i + 1) * k));
+    }
+    const int ranks = m_comm.size();
+    m_ghostBegin.assign(static_cast<std::size_t>(ranks) + 1, 0);
+    for (const std::uint32_t i : ghostOrder) {
+        appendRecord(store, in.ghosts[i]);
+        rows.insert(rows.end(), in.ghostRows.begin() + static_cast<std::ptrdiff_t>(i * k),
+                    in.ghostRows.begin() + static_cast<std::ptrdiff_t>((i + 1) * k));
+        ++m_ghostBegin[static_cast<std::size_t>(in.ghosts[i].owner) + 1];
+    }
+    m_owned = in.owned.size();
+    m_ghostBegin[0] = static_cast<std::uint32_t>(m_owned);
+    for (int r = 0; r < ranks; ++r) m_ghostBegin[r + 1] += m_ghostBegin[r];
+    const auto slotOfId = slotsById(store);
+    std::vector<PairHistory> pairs = pairHistoryInSlots(std::move(in.pairs), slotOfId);
+    std::vector<PairHistory> walls = wallHistoryInSlots(in.walls, slotOfId);
+    // Which ranks keep each owned particle as a ghost (the same rule the sender applied).
+    m_sendSlots.assign(static_cast<std::size_t>(ranks), {});
+    for (std::uint32_t i = 0; i < m_owned; ++i)
+        m_partition.forGhostRanks(axis == 0 ? store.x[i] : store.y[i], halo, m_comm.rank(),
+                                  [&](int r) { m_sendSlots[static_cast<std::size_t>(r)].push_back(i); });
+    for (auto& slots : m_sendSlots)
+        std::sort(slots.begin(), slots.end(), [&](std::uint32_t p, std::uint32_t q) { return store.id[p] < store.id[q]; });
+    m_stats.owned = m_owned;
+    m_stats.ghosts = store.size() - m_owned;
+    m_world.replaceParticles(std::move(store), rows, pairs, walls, m_owned);
+}
+
+void DomainWorld::exchange() {
+    const double started = wallSeconds();
+    const int ranks = m_comm.size();
+    const model::ParticleStore& s = m_world.store();
+    if (m_config.balance && ranks > 1) {
+        const double imbalance = measureImbalance();
+        if (imbalance > m_config.balanceTrigger) {
+            const std::vector<Real> w = workWeights();
+            const std::vector<Real>& coords = m_partition.axis == 0 ? s.x : s.y;
+            m_partition = balancedSlabs(m_comm, m_partition.axis, std::span<const Real>(coords.data(), m_owned), w);
+            ++m_stats.rebalances;
+        }
+    }
+    const Real halo = haloWidth();
+    const std::size_t k = m_integratorColumns;
+    std::vector<Incoming> out(static_cast<std::size_t>(ranks));
+    // Destinations of every owned particle: its new owner first, then the ranks keeping a ghost.
+    std::vector<std::uint32_t> destBegin(m_owned + 1, 0);
+    std::vector<int> dests;
+    std::vector<Real> row(k);
+    for (std::size_t i = 0; i < m_owned; ++i) {
+        const Real c = m_partition.axis == 0 ? s.x[i] : s.y[i];
+        const int owner = m_partition.owner(c);
+        m_world.integratorRow(i, row.data());
+        const ParticleRecord rec = recordOf(s, i, owner);
+        auto& mine = out[static_cast<std::size_t>(owner)];
+        mine.owned.push_back(rec);
+        mine.ownedRows.insert(mine.ownedRows.end(), row.begin(), row.end());
+        dests.push_back(owner);
+        m_partition.forGhostRanks(c, halo, owner, [&](int r) {
+            auto& theirs = out[static_cast<std::size_t>(r)];
+            theirs.ghosts.push_back(rec);
+            theirs.ghostRows.insert(theirs.ghostRows.end(), row.begin(), row.end());
+            dests.push_back(r);
+        });
+        destBegin[i + 1] = static_cast<std::uint32_t>(dests.size());
+    }
+    // A pair's history goes wherever one of its owned particles goes (the receiver keeps it when
+    // it holds both); a wall pair's goes with its particle to the new owner.
+    std::vector<int> targets;
+    bool lowerIsFirst = true;
+    for (const PairHistory& h : NeighborList::historyOf(m_world.neighbors().pairs)) {
+        const std::uint32_t a = keyFirst(h.key), b = keySecond(h.key);
+        targets.clear();
+        for (const std::uint32_t slot : {a, b})
+            if (slot < m_owned) targets.insert(targets.end(), dests.begin() + destBegin[slot], dests.begin() + destBegin[slot + 1]);
+        std::sort(targets.begin(), targets.end());
+        targets.erase(std::unique(targets.begin(), targets.end()), targets.end());
+        IdHistory r = pairHistoryById(s, h, false, lowerIsFirst);
+        r.fromOwnerOfA = (lowerIsFirst ? a : b) < m_owned ? 1 : 0;
+        for (const int t : targets) out[static_cast<std::size_t>(t)].pairs.push_back(r);
+    }
+    for (const PairHistory& h : NeighborList::historyOf(m_world.neighbors().wallPairs)) {
+        const std::uint32_t a = keyFirst(h.key);
+        if (a < m_owned) out[static_cast<std::size_t>(dests[destBegin[a]])].walls.push_back(wallHistoryById(s, h));
+    }
+    std::vector<ByteBuffer> messages(static_cast<std::size_t>(ranks));
+    for (int r = 0; r < ranks; ++r) {
+        MessageWriter w;
+        const Incoming& o = out[static_cast<std::size_t>(r)];
+        w.put(o.owned);
+        w.put(o.ownedRows);
+        w.put(o.ghosts);
+        w.put(o.ghostRows);
+        w.put(o.pairs);
+        w.put(o.walls);
+        messages[static_cast<std::size_t>(r)] = w.take();
+    }
+    out.clear();
+    const std::vector<ByteBuffer> received = m_comm.allToAll(std::move(messages));
+    Incoming in;
+    for (const ByteBuffer& bytes : received) {
+        MessageReader rd(bytes);
+        rd.appendTo(in.owned);
+        rd.appendTo(in.ownedRows);
+        rd.appendTo(in.ghosts);
+        rd.appendTo(in.ghostRows);
+        rd.appendTo(in.pairs);
+        rd.appendTo(in.walls);
+    }
+    assemble(std::move(in));
+    ++m_stats.exchanges;
+    // The work after the exchange, and the halo's share of all particles.
+    m_stats.imbalance = ranks > 1 ? measureImbalance() : 1.0;
+    m_stats.imbalanceSum += m_stats.imbalance;
+    std::uint64_t counts[2] = {m_stats.owned, m_stats.ghosts};
+    m_comm.allSum(std::span<std::uint64_t>(counts, 2));
+    m_stats.haloShare = counts[0] > 0 ? static_cast<double>(counts[1]) / static_cast<double>(counts[0]) : 0.0;
+    m_stats.exchangeSeconds += wallSeconds() - started;
+}
+
+void DomainWorld::updateHalo() {
+    const int ranks = m_comm.size();
+    if (ranks == 1) return;
+    const double started = wallSeconds();
+    const std::size_t k = m_integratorColumns, per = 6 + k;
+    model::ParticleStore& s = m_world.storeForHalo();
+    std::vector<ByteBuffer> out(static_cast<std::size_t>(ranks));
+    std::vector<Real> values;
+    for (int r = 0; r < ranks; ++r) {
+        const auto& slots = m_sendSlots[static_cast<std::size_t>(r)];
+        values.resize(slots.size() * per);
+        Real* v = values.data();
+        for (const std::uint32_t i : slots) {
+            v[0] = s.x[i];
+            v[1] = s.y[i];
+            v[2] = s.vx[i];
+            v[3] = s.vy[i];
+            v[4] = s.angle[i];
+            v[5] = s.omega[i];
+            m_world.integratorRow(i, v + 6);
+            v += per;
+        }
+        out[static_cast<std::size_t>(r)] = packPod(std::span<const Real>(values));
+    }
+    const std::vector<ByteBuffer> in = m_comm.allToAll(std::move(out));
+    for (int r = 0; r < ranks; ++r) {
+        const std::uint32_t begin = m_ghostBegin[static_cast<std::size_t>(r)];
+        const std::uint32_t end = m_ghostBegin[static_cast<std::size_t>(r) + 1];
+        const ByteBuffer& bytes = in[static_cast<std::size_t>(r)];
+        if (bytes.size() != (end - begin) * per * sizeof(Real))
+            throw std::logic_error("halo update: a rank sent another number of ghosts than it owns here");
+        for (std::uint32_t g = begin; g < end; ++g) {
+            Real v[6];
+            std::memcpy(v, bytes.data() + (g - begin) * per * sizeof(Real), sizeof v);
+            s.x[g] = v[0];
+            s.y[g] = v[1];
+            s.vx[g] = v[2];
+            s.vy[g] = v[3];
+            s.angle[g] = v[4];
+            s.omega[g] = v[5];
+            if (k > 0) {
+                std::vector<Real>& r6 = values;
+                r6.resize(k);
+                std::memcpy(r6.data(), bytes.data() + ((g - begin) * per + 6) * sizeof(Real), k * sizeof(Real));
+                m_world.setIntegratorRow(g, r6.data());
+            }
+        }
+    }
+    m_stats.haloSeconds += wallSeconds() - started;
+}
+
+std::uint32_t DomainWorld::step(bool stop) {
+    std::uint32_t status = m_world.beginStep();
+    updateHalo();
+    double started = wallSeconds();
+    // One reduction: whether any rank must rebuild, and every rank's flags of the first part.
+    double flags[5] = {m_world.neighborsStale() ? 1.0 : 0.0, (status & kStepNonFinite) ? 1.0 : 0.0,
+                       (status & kStepTunnelling) ? 1.0 : 0.0, (status & kStepFieldFailed) ? 1.0 : 0.0,
+                       stop ? 1.0 : 0.0};
+    m_comm.allMax(flags);
+    m_stopRequested = flags[4] > 0;
+    m_stats.reduceSeconds += wallSeconds() - started;
+    status = (flags[1] > 0 ? kStepNonFinite : 0u) | (flags[2] > 0 ? kStepTunnelling : 0u) |
+             (flags[3] > 0 ? kStepFieldFailed : 0u);
+    if (status & kStepFieldFailed) return status;
+    if (flags[0] > 0) exchange();
+    status |= m_world.finishStep();
+    // Wall forces of all ranks (each counts its own particles' contacts) and the overlap flag.
+    started = wallSeconds();
+    std::vector<Vec2>& wallForce = m_world.wallForceForSum();
+    std::vector<double> sums(2 * wallForce.size() + 1);
+    for (std::size_t w = 0; w < wallForce.size(); ++w) {
+        sums[2 * w] = wallForce[w].x;
+        sums[2 * w + 1] = wallForce[w].y;
+    }
+    sums.back() = (status & kStepDeepOverlap) ? 1.0 : 0.0;
+    m_comm.allSum(sums);
+    for (std::size_t w = 0; w < wallForce.size(); ++w) wallForce[w] = {sums[2 * w], sums[2 * w + 1]};
+    if (sums.back() > 0) status |= kStepDeepOverlap;
+    m_stats.reduceSeconds += wallSeconds() - started;
+    return status;
+}
+
+std::size_t DomainWorld::memoryBytes() {
+    std::uint64_t bytes = m_world.memoryBytes();
+    m_comm.allSum(std::span<std::uint64_t>(&bytes, 1));
+    return static_cast<std::size_t>(bytes);
+}
+
+void DomainWorld::gather(World& copy) {
+    const model::ParticleStore& s = m_world.store();
+    const std::size_t k = m_integratorColumns;
+    Incoming mine;
+    std::vector<Real> row(k);
+    for (std::size_t i = 0; i < m_owned; ++i) {
+        mine.owned.push_back(recordOf(s, i, m_comm.rank()));
+        m_world.integratorRow(i, row.data());
+        mine.ownedRows.insert(mine.ownedRows.end(), row.begin(), row.end());
+    }
+    bool lowerIsFirst = true;
+    for (const PairHistory& h : NeighborList::historyOf(m_world.neighbors().pairs)) {
+        const IdHistory r = pairHistoryById(s, h, true, lowerIsFirst);
+        if ((lowerIsFirst ? keyFirst(h.key) : keySecond(h.key)) < m_owned) mine.pairs.push_back(r);  // once
+    }
+    for (const PairHistory& h : NeighborList::historyOf(m_world.neighbors().wallPairs))
+        mine.walls.push_back(wallHistoryById(s, h));
+    MessageWriter w;
+    w.put(mine.owned);
+    w.put(mine.ownedRows);
+    w.put(mine.pairs);
+    w.put(mine.walls);
+    const std::vector<ByteBuffer> all = m_comm.gather(w.take());
+    if (!m_comm.root()) return;
+    Incoming in;
+    for (const ByteBuffer& bytes : all) {
+        MessageReader rd(bytes);
+        rd.appendTo(in.owned);
+        rd.appendTo(in.ownedRows);
+        rd.appendTo(in.pairs);
+        rd.appendTo(in.walls);
+    }
+    std::vector<std::uint32_t> order(in.owned.size());
+    std::iota(order.begin(), order.end(), 0u);
+    std::sort(order.begin(), order.end(),
+              [&](std::uint32_t p, std::uint32_t q) { return in.owned[p].id < in.owned[q].id; });
+    model::ParticleStore store;
+    store.reserve(order.size());
+    std::vector<Real> rows;
+    rows.reserve(order.size() * k);
+    for (const std::uint32_t i : order) {
+        appendRecord(store, in.owned[i]);
+        rows.insert(rows.end(), in.ownedRows.begin() + static_cast<std::ptrdiff_t>(i * k),
+                    in.ownedRows.begin() + static_cast<std::ptrdiff_t>((i + 1) * k));
+    }
+    const auto slotOfId = slotsById(store);
+    const std::vector<PairHistory> pairs = pairHistoryInSlots(std::move(in.pairs), slotOfId);
+    const std::vector<PairHistory> walls = wallHistoryInSlots(in.walls, slotOfId);
+    copy.adoptClock(m_world);
+    const std::size_t n = store.size();
+    copy.replaceParticles(std::move(store), rows, pairs, walls, n, true);
+    copy.evaluateForOutput();
+}
+
+}  // namespace granulab::dem
