@@ -307,7 +307,8 @@ std::uint32_t World::finishStep() {
 void World::replaceParticles(model::ParticleStore store, const std::vector<Real>& integratorRows,
                              const std::vector<PairHistory>& pairHistory,
                              const std::vector<PairHistory>& wallHistory, std::size_t ownedEnd,
-                             bool outputCopy) {
+                             bool countAsBuild, bool outputCopy) {
+    const std::uint64_t builds = m_list.builds;
     m_store = std::move(store);
     const std::size_t n = m_store.size();
     if (StateColumns* state = m_integrator->state()) {
@@ -323,6 +324,7 @@ void World::replaceParticles(model::ParticleStore store, const std::vector<Real>
     updateTeam();
     m_list.rebuildWith(m_store, m_walls, m_config.skin, time(), *m_broad, m_laws, pairHistory, wallHistory,
                        outputCopy || !m_integrator->singleEvaluation(), m_forceWork.threads);
+    if (!countAsBuild) m_list.builds = builds;
 }
 
 std::size_t World::integratorColumns() const noexcept {
@@ -367,6 +369,9 @@ void World::evaluateForOutput() {
     const BodyForces body = bodyForcesAt(m_step);
     const std::vector<Real> fx = m_store.fx, fy = m_store.fy, torque = m_store.torque;
     const std::vector<Vec2> wallForce = m_wallForce;
+    // Closest features are updated in place: keep those of the run (a checkpoint follows).
+    const std::vector<geom::FeatureCache> pairFeatures = m_list.pairs.features,
+                                          wallFeatures = m_list.wallPairs.features;
     if (m_list.pairs.xiTrial.size() != m_list.pairs.size() ||
         m_list.wallPairs.xiTrial.size() != m_list.wallPairs.size())
         return;  // the lists were built without trial columns: nothing may be written
@@ -375,6 +380,8 @@ void World::evaluateForOutput() {
     m_store.fy = fy;
     m_store.torque = torque;
     m_wallForce = wallForce;
+    m_list.pairs.features = pairFeatures;
+    m_list.wallPairs.features = wallFeatures;
 }
 
 Energies World::energies() const noexcept {

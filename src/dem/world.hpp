@@ -119,10 +119,12 @@ public:
     /// forces are not used and they have no wall contacts), sets the integrator state from
     /// `integratorRows` (integratorColumns() values per slot, slot after slot) and rebuilds the
     /// lists with the given history (keys in the new slots). Radius bounds, ids, walls and the
-    /// clock are kept. `outputCopy`: the lists get trial columns, for evaluateForOutput.
+    /// clock are kept. `countAsBuild`: a migration that counts in neighbors().builds (not the
+    /// first split or a gathered copy). `outputCopy`: the lists get trial columns, for
+    /// evaluateForOutput.
     void replaceParticles(model::ParticleStore store, const std::vector<Real>& integratorRows,
                           const std::vector<PairHistory>& pairHistory,
-                          const std::vector<PairHistory>& wallHistory, std::size_t ownedEnd,
+                          const std::vector<PairHistory>& wallHistory, std::size_t ownedEnd, bool countAsBuild,
                           bool outputCopy = false);
     /// Values of per-particle integrator state (0 for an integrator without any).
     std::size_t integratorColumns() const noexcept;

@@ -14,6 +14,7 @@
 #include "app/dem/dem_fluid.hpp"
 #include "app/dem/particle_series.hpp"
 #include "app/simulation_options.hpp"
+#include "core/binary_io.hpp"
 #include "core/communicator.hpp"
 #include "core/interrupt.hpp"
 #include "core/version.hpp"
@@ -466,18 +467,43 @@ public:
                           fmt::format("{:.17g} s", m_scene.run.endTime)});
         return id;
     }
-    /// Several ranks: the gathered copy in the one-rank format, so that any rank count resumes it.
+    /// The slab cuts of a run on several ranks (none on one), then the World's state in the
+    /// one-rank format (the gathered copy), so that any rank count resumes it. On several ranks
+    /// the particles are first redistributed over the same cuts: a run resumed on as many ranks
+    /// then continues bit for bit.
     void saveState(std::ostream& out) override {
-        if (m_domain && (view(), !worldCommunicator().root())) return;
+        if (m_domain) {
+            m_domain->redistribute();
+            m_viewFresh = false;
+            view();
+            if (!worldCommunicator().root()) return;
+        }
+        writePod(out, kDomainMagic);
+        const dem::SlabPartition none;
+        const dem::SlabPartition& part = m_domain ? m_domain->partition() : none;
+        writePod<std::int32_t>(out, part.axis);
+        writeVector(out, part.cuts);
         m_world.saveState(out);
     }
     void loadState(std::istream& in) override {
+        dem::SlabPartition part;
+        const auto at = in.tellg();
+        if (readPod<std::uint64_t>(in) == kDomainMagic) {
+            part.axis = readPod<std::int32_t>(in);
+            readVector(in, part.cuts);
+            if (part.axis < 0 || part.axis > 1 || !std::is_sorted(part.cuts.begin(), part.cuts.end()))
+                throw std::runtime_error("checkpoint corrupt (domain cuts)");
+        } else {
+            in.seekg(at);  // written before the domain decomposition: the World's state only
+        }
         if (!m_whole) return m_world.loadState(in);
         m_whole->loadState(in);
-        decompose();
+        decompose(&part);
     }
 
 private:
+    static constexpr std::uint64_t kDomainMagic = 0x31534e49414d4f44ULL;  // "DOMAINS1"
+
     std::int64_t currentStep() const noexcept {
         return m_domain ? m_domain->stepIndex() : m_world.stepIndex();
     }
@@ -506,12 +532,12 @@ private:
 
     /// Hands the whole world (initialised or loaded) to the domain decomposition; the adapter's
     /// own world becomes the gathered copy for outputs (empty until the first gather).
-    void decompose() {
+    void decompose(const dem::SlabPartition* cuts = nullptr) {
         dem::DomainConfig config;
         config.balance = m_scene.run.loadBalance;
-        m_domain = std::make_unique<dem::DomainWorld>(worldCommunicator(), std::move(*m_whole), config);
+        m_domain = std::make_unique<dem::DomainWorld>(worldCommunicator(), std::move(*m_whole), config, cuts);
         m_whole.reset();
-        m_world.replaceParticles({}, {}, {}, {}, 0);
+        m_world.replaceParticles({}, {}, {}, {}, 0, false);
         m_world.recordContacts(wantsContacts());
         m_viewFresh = false;
     }

@@ -185,7 +185,7 @@ struct DomainWorld::Incoming {
     std::vector<IdHistory> pairs, walls;
 };
 
-DomainWorld::DomainWorld(Communicator& comm, World whole, DomainConfig config)
+DomainWorld::DomainWorld(Communicator& comm, World whole, DomainConfig config, const SlabPartition* cuts)
     : m_comm(comm), m_world(std::move(whole)), m_config(config) {
     const model::ParticleStore& s = m_world.store();
     const int ranks = comm.size(), me = comm.rank();
@@ -199,8 +199,11 @@ DomainWorld::DomainWorld(Communicator& comm, World whole, DomainConfig config)
         lo[1] = std::min(lo[1], s.y[k]);
         hi[1] = std::max(hi[1], s.y[k]);
     }
-    const int axis = hi[1] - lo[1] > hi[0] - lo[0] ? 1 : 0;  // slabs across the longer extent
-    if (m_config.balance && ranks > 1) {
+    // Slabs across the longer extent.
+    const int axis = cuts && cuts->ranks() == ranks ? cuts->axis : (hi[1] - lo[1] > hi[0] - lo[0] ? 1 : 0);
+    if (cuts && cuts->ranks() == ranks) {
+        m_partition = *cuts;
+    } else if (m_config.balance && ranks > 1) {
         // Every rank holds every particle: the root's alone make the histogram.
         const std::vector<Real> weights = me == 0 ? workWeights() : std::vector<Real>{};
         const std::vector<Real>& coords = axis == 0 ? s.x : s.y;
@@ -232,7 +235,7 @@ DomainWorld::DomainWorld(Communicator& comm, World whole, DomainConfig config)
             in.pairs.push_back(pairHistoryById(s, h, true, lowerIsFirst));
     for (const PairHistory& h : NeighborList::historyOf(m_world.neighbors().wallPairs))
         if (kept[keyFirst(h.key)]) in.walls.push_back(wallHistoryById(s, h));
-    assemble(std::move(in));
+    assemble(std::move(in), false);
 }
 
 std::vector<Real> DomainWorld::workWeights() const {
@@ -256,7 +259,7 @@ double DomainWorld::measureImbalance() {
     return mean > 0 ? most / mean : 1.0;
 }
 
-void DomainWorld::assemble(Incoming in) {
+void DomainWorld::assemble(Incoming in, bool countAsBuild) {
     const int axis = m_partition.axis;
     const Real halo = haloWidth();
     const std::size_t k = m_integratorColumns;
@@ -313,14 +316,14 @@ void DomainWorld::assemble(Incoming in) {
         std::sort(slots.begin(), slots.end(), [&](std::uint32_t p, std::uint32_t q) { return store.id[p] < store.id[q]; });
     m_stats.owned = m_owned;
     m_stats.ghosts = store.size() - m_owned;
-    m_world.replaceParticles(std::move(store), rows, pairs, walls, m_owned);
+    m_world.replaceParticles(std::move(store), rows, pairs, walls, m_owned, countAsBuild);
 }
 
-void DomainWorld::exchange() {
+void DomainWorld::exchange(bool mayBalance) {
     const double started = wallSeconds();
     const int ranks = m_comm.size();
     const model::ParticleStore& s = m_world.store();
-    if (m_config.balance && ranks > 1) {
+    if (mayBalance && m_config.balance && ranks > 1) {
         const double imbalance = measureImbalance();
         if (imbalance > m_config.balanceTrigger) {
             const std::vector<Real> w = workWeights();
@@ -396,7 +399,7 @@ void DomainWorld::exchange() {
         rd.appendTo(in.pairs);
         rd.appendTo(in.walls);
     }
-    assemble(std::move(in));
+    assemble(std::move(in), true);
     ++m_stats.exchanges;
     // The work after the exchange, and the halo's share of all particles.
     m_stats.imbalance = ranks > 1 ? measureImbalance() : 1.0;
@@ -546,7 +549,7 @@ void DomainWorld::gather(World& copy) {
     const std::vector<PairHistory> walls = wallHistoryInSlots(in.walls, slotOfId);
     copy.adoptClock(m_world);
     const std::size_t n = store.size();
-    copy.replaceParticles(std::move(store), rows, pairs, walls, n, true);
+    copy.replaceParticles(std::move(store), rows, pairs, walls, n, false, true);
     copy.evaluateForOutput();
 }
 

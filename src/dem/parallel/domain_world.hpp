@@ -45,7 +45,10 @@ class DomainWorld {
 public:
     /// `whole`: the scene's world with every particle, initialised or loaded (the same on every
     /// rank); it becomes this rank's part. Collective.
-    DomainWorld(Communicator& comm, World whole, DomainConfig config = {});
+    /// `cuts`: the partition to start from (a checkpoint of the same rank count); otherwise the
+    /// cuts are balanced (or uniform) from the particles.
+    DomainWorld(Communicator& comm, World whole, DomainConfig config = {},
+                const SlabPartition* cuts = nullptr);
 
     /// One step on every rank; the StepStatus flags of all ranks together. `stop`: this rank
     /// was asked to stop (a signal); stopRequested() then tells every rank after this step.
@@ -60,6 +63,10 @@ public:
     std::size_t particles() const noexcept { return m_particles; }
     const SlabPartition& partition() const noexcept { return m_partition; }
     const DomainStats& stats() const noexcept { return m_stats; }
+    /// An exchange now, with the cuts kept (collective): the local worlds become what a
+    /// DomainWorld made from the gathered state and partition() builds, so that a run resumed
+    /// from a checkpoint written here continues bit for bit on the same rank count.
+    void redistribute() { exchange(false); }
     /// Every rank's engine memory [bytes] (collective).
     std::size_t memoryBytes();
 
@@ -72,9 +79,9 @@ public:
 private:
     struct Incoming;
     /// Migration, ghosts and the new lists (collective).
-    void exchange();
+    void exchange(bool mayBalance = true);
     /// Builds this rank's World from what it received (owned and ghost records, history).
-    void assemble(Incoming in);
+    void assemble(Incoming in, bool countAsBuild);
     /// Owners send their ghosts' state; ghosts take it.
     void updateHalo();
     /// [m] the ghost layer: every partner a contact candidate can have.
