@@ -124,8 +124,8 @@ public:
     /// evaluateForOutput.
     void replaceParticles(model::ParticleStore store, const std::vector<Real>& integratorRows,
                           const std::vector<PairHistory>& pairHistory,
-                          const std::vector<PairHistory>& wallHistory, std::size_t ownedEnd, bool countAsBuild,
-                          bool outputCopy = false);
+                          const std::vector<PairHistory>& wallHistory, std::size_t ownedEnd,
+                          bool countAsBuild, bool outputCopy = false);
     /// Values of per-particle integrator state (0 for an integrator without any).
     std::size_t integratorColumns() const noexcept;
     /// Copies slot k's integrator state to out[0 .. integratorColumns()) (zeros before the first step).

@@ -33,9 +33,9 @@ struct IdHistory {
 };
 
 ParticleRecord recordOf(const model::ParticleStore& s, std::size_t k, int owner) {
-    return {s.x[k],      s.y[k],      s.vx[k],     s.vy[k],          s.angle[k],  s.omega[k],
-            s.fx[k],     s.fy[k],     s.torque[k], s.radius[k],      s.mass[k],   s.invMass[k],
-            s.invInertia[k], s.id[k], s.material[k], s.shape[k], owner};
+    return {s.x[k],          s.y[k],  s.vx[k],       s.vy[k],     s.angle[k], s.omega[k],
+            s.fx[k],         s.fy[k], s.torque[k],   s.radius[k], s.mass[k],  s.invMass[k],
+            s.invInertia[k], s.id[k], s.material[k], s.shape[k],  owner};
 }
 
 void appendRecord(model::ParticleStore& s, const ParticleRecord& r) {
@@ -119,22 +119,22 @@ private:
 /// Interleaves the bits of two 16-bit cell coordinates (a Z curve: nearby cells, nearby keys).
 std::uint32_t mortonKey(std::uint32_t cx, std::uint32_t cy) noexcept {
     std::uint32_t key = 0;
-    for (int b = 0; b < 16; ++b)
-        key |= ((cx >> b) & 1u) << (2 * b) | ((cy >> b) & 1u) << (2 * b + 1);
+    for (int b = 0; b < 16; ++b) key |= ((cx >> b) & 1u) << (2 * b) | ((cy >> b) & 1u) << (2 * b + 1);
     return key;
 }
 
 /// Slot-keyed history of the pairs whose both ids are in `slotOfId` (sorted id, slot), preferring
 /// the record of a's owner when two ranks sent the same pair.
-std::vector<PairHistory> pairHistoryInSlots(std::vector<IdHistory> records,
-                                            const std::vector<std::pair<ParticleId, std::uint32_t>>& slotOfId) {
+std::vector<PairHistory> pairHistoryInSlots(
+    std::vector<IdHistory> records, const std::vector<std::pair<ParticleId, std::uint32_t>>& slotOfId) {
     std::sort(records.begin(), records.end(), [](const IdHistory& p, const IdHistory& q) {
         if (p.a != q.a) return p.a < q.a;
         if (p.b != q.b) return p.b < q.b;
         return p.fromOwnerOfA > q.fromOwnerOfA;
     });
     const auto slotOf = [&](ParticleId id) {
-        auto it = std::lower_bound(slotOfId.begin(), slotOfId.end(), std::pair<ParticleId, std::uint32_t>{id, 0});
+        auto it =
+            std::lower_bound(slotOfId.begin(), slotOfId.end(), std::pair<ParticleId, std::uint32_t>{id, 0});
         return it != slotOfId.end() && it->first == id ? it->second : kRemovedSlot;
     };
     std::vector<PairHistory> out;
@@ -154,11 +154,13 @@ std::vector<PairHistory> pairHistoryInSlots(std::vector<IdHistory> records,
     return out;
 }
 
-std::vector<PairHistory> wallHistoryInSlots(const std::vector<IdHistory>& records,
-                                            const std::vector<std::pair<ParticleId, std::uint32_t>>& slotOfId) {
+std::vector<PairHistory> wallHistoryInSlots(
+    const std::vector<IdHistory>& records,
+    const std::vector<std::pair<ParticleId, std::uint32_t>>& slotOfId) {
     std::vector<PairHistory> out;
     for (const IdHistory& r : records) {
-        auto it = std::lower_bound(slotOfId.begin(), slotOfId.end(), std::pair<ParticleId, std::uint32_t>{r.a, 0});
+        auto it =
+            std::lower_bound(slotOfId.begin(), slotOfId.end(), std::pair<ParticleId, std::uint32_t>{r.a, 0});
         if (it == slotOfId.end() || it->first != r.a) continue;
         out.push_back({pairKey(it->second, r.b), r.xi, r.zeta, r.areaOld, r.features});
     }
@@ -207,8 +209,8 @@ DomainWorld::DomainWorld(Communicator& comm, World whole, DomainConfig config, c
         // Every rank holds every particle: the root's alone make the histogram.
         const std::vector<Real> weights = me == 0 ? workWeights() : std::vector<Real>{};
         const std::vector<Real>& coords = axis == 0 ? s.x : s.y;
-        m_partition = balancedSlabs(comm, axis, std::span<const Real>(coords.data(), me == 0 ? coords.size() : 0),
-                                    weights);
+        m_partition = balancedSlabs(
+            comm, axis, std::span<const Real>(coords.data(), me == 0 ? coords.size() : 0), weights);
     } else {
         m_partition = uniformSlabs(axis, lo[axis], hi[axis], ranks);
     }
@@ -313,7 +315,8 @@ void DomainWorld::assemble(Incoming in, bool countAsBuild) {
         m_partition.forGhostRanks(axis == 0 ? store.x[i] : store.y[i], halo, m_comm.rank(),
                                   [&](int r) { m_sendSlots[static_cast<std::size_t>(r)].push_back(i); });
     for (auto& slots : m_sendSlots)
-        std::sort(slots.begin(), slots.end(), [&](std::uint32_t p, std::uint32_t q) { return store.id[p] < store.id[q]; });
+        std::sort(slots.begin(), slots.end(),
+                  [&](std::uint32_t p, std::uint32_t q) { return store.id[p] < store.id[q]; });
     m_stats.owned = m_owned;
     m_stats.ghosts = store.size() - m_owned;
     m_world.replaceParticles(std::move(store), rows, pairs, walls, m_owned, countAsBuild);
@@ -328,7 +331,8 @@ void DomainWorld::exchange(bool mayBalance) {
         if (imbalance > m_config.balanceTrigger) {
             const std::vector<Real> w = workWeights();
             const std::vector<Real>& coords = m_partition.axis == 0 ? s.x : s.y;
-            m_partition = balancedSlabs(m_comm, m_partition.axis, std::span<const Real>(coords.data(), m_owned), w);
+            m_partition =
+                balancedSlabs(m_comm, m_partition.axis, std::span<const Real>(coords.data(), m_owned), w);
             ++m_stats.rebalances;
         }
     }
@@ -364,7 +368,9 @@ void DomainWorld::exchange(bool mayBalance) {
         const std::uint32_t a = keyFirst(h.key), b = keySecond(h.key);
         targets.clear();
         for (const std::uint32_t slot : {a, b})
-            if (slot < m_owned) targets.insert(targets.end(), dests.begin() + destBegin[slot], dests.begin() + destBegin[slot + 1]);
+            if (slot < m_owned)
+                targets.insert(targets.end(), dests.begin() + destBegin[slot],
+                               dests.begin() + destBegin[slot + 1]);
         std::sort(targets.begin(), targets.end());
         targets.erase(std::unique(targets.begin(), targets.end()), targets.end());
         IdHistory r = pairHistoryById(s, h, false, lowerIsFirst);
@@ -373,7 +379,8 @@ void DomainWorld::exchange(bool mayBalance) {
     }
     for (const PairHistory& h : NeighborList::historyOf(m_world.neighbors().wallPairs)) {
         const std::uint32_t a = keyFirst(h.key);
-        if (a < m_owned) out[static_cast<std::size_t>(dests[destBegin[a]])].walls.push_back(wallHistoryById(s, h));
+        if (a < m_owned)
+            out[static_cast<std::size_t>(dests[destBegin[a]])].walls.push_back(wallHistoryById(s, h));
     }
     std::vector<ByteBuffer> messages(static_cast<std::size_t>(ranks));
     for (int r = 0; r < ranks; ++r) {
@@ -453,7 +460,8 @@ void DomainWorld::updateHalo() {
             if (k > 0) {
                 std::vector<Real>& r6 = values;
                 r6.resize(k);
-                std::memcpy(r6.data(), bytes.data() + ((g - begin) * per + 6) * sizeof(Real), k * sizeof(Real));
+                std::memcpy(r6.data(), bytes.data() + ((g - begin) * per + 6) * sizeof(Real),
+                            k * sizeof(Real));
                 m_world.setIntegratorRow(g, r6.data());
             }
         }

@@ -14,7 +14,7 @@
 namespace granulab::dem {
 
 struct SlabPartition {
-    int axis = 0;           ///< 0: slabs across x, 1: across y
+    int axis = 0;            ///< 0: slabs across x, 1: across y
     std::vector<Real> cuts;  ///< [m] ranks - 1 ascending cuts; rank r owns [cuts[r-1], cuts[r])
 
     int ranks() const noexcept { return static_cast<int>(cuts.size()) + 1; }
