@@ -101,7 +101,24 @@ ParticleFlow::ParticleFlow(FlowConfig config) : m_config(std::move(config)) {
     m_counters.outletMass.assign(m_config.outlets.size(), 0);
 }
 
-void ParticleFlow::refreshCandidates(const model::ParticleStore& s, Real maxRadius, Real skin) {
+bool ParticleFlow::insertionDue(Real t, Real dt) const noexcept {
+    for (std::size_t e = 0; e < m_config.sources.size(); ++e) {
+        const DropSource& src = m_config.sources[e];
+        const Real due = src.from + static_cast<Real>(m_counters.sourceDrops[e]) * src.interval;
+        if (due <= t && due <= src.to) return true;
+    }
+    for (std::size_t e = 0; e < m_config.inlets.size(); ++e) {  // the condition of `entering`
+        const Inlet& in = m_config.inlets[e];
+        if (t >= in.from && t < in.to &&
+            (t - in.from) * in.rate > static_cast<Real>(m_counters.inletEmitted[e]) + dt)
+            return true;
+    }
+    return false;
+}
+
+void ParticleFlow::refreshCandidates(const model::ParticleStore& s, Real maxRadius, Real skin,
+                                     std::size_t end) {
+    const std::size_t n = std::min(end, s.size());
     m_near.resize(m_config.outlets.size());
     const Real* __restrict x = s.x.data();
     const Real* __restrict y = s.y.data();
@@ -115,7 +132,7 @@ void ParticleFlow::refreshCandidates(const model::ParticleStore& s, Real maxRadi
         const Real by0 = (q.isRegion ? q.ymin : std::min(q.a.y, q.b.y)) - pad;
         const Real by1 = (q.isRegion ? q.ymax : std::max(q.a.y, q.b.y)) + pad;
         const bool outside = q.isRegion && !q.removeInside;  // candidates: not deep inside the region
-        for (std::uint32_t i = 0; i < s.size(); ++i) {
+        for (std::uint32_t i = 0; i < n; ++i) {
             const bool deepInside =
                 x[i] > q.xmin + skin && x[i] < q.xmax - skin && y[i] > q.ymin + skin && y[i] < q.ymax - skin;
             const bool inBox = x[i] >= bx0 && x[i] <= bx1 && y[i] >= by0 && y[i] <= by1;

@@ -104,7 +104,15 @@ public:
     /// The particles that can reach an outlet before the next neighbour rebuild: those within
     /// `maxRadius` + `skin` [m] of its capture zone (no particle moves more than skin/2 between
     /// rebuilds). Called at every rebuild and whenever particles enter or leave.
-    void refreshCandidates(const model::ParticleStore& s, Real maxRadius, Real skin);
+    /// Only slots below `end` are candidates (a domain's owned particles; default: all).
+    void refreshCandidates(const model::ParticleStore& s, Real maxRadius, Real skin,
+                           std::size_t end = static_cast<std::size_t>(-1));
+    /// True when a source drop or an inlet emission is due at time t (what `entering` would
+    /// try), without drawing anything.
+    bool insertionDue(Real t, Real dt) const noexcept;
+    /// The counters that every domain of a decomposed run books for its own particles only
+    /// (removals); the others advance alike on every rank.
+    FlowCounters& countersForDomain() noexcept { return m_counters; }
     /// Particles entering at time t, the end of a step of length dt [s], placed overlap-free
     /// against the store and the solid walls (retry, then skip and count); `gravity` [m/s^2]
     /// tells REL sources which grains are still falling.

@@ -297,7 +297,7 @@ std::uint32_t World::finishStep() {
     }
     if (trial) m_list.commitHistory();
     if (m_stats.maxRelativeOverlap >= 1.0) status |= kStepDeepOverlap;
-    if (m_flow.active()) {  // 8 particles leave and enter (the only place N changes)
+    if (m_flow.active() && !m_externalFlow) {  // 8 particles leave and enter (the only place N changes)
         ScopedStage t(m_timers, Stage::Updaters);
         exchangeParticles();
     }
@@ -325,6 +325,19 @@ void World::replaceParticles(model::ParticleStore store, const std::vector<Real>
     m_list.rebuildWith(m_store, m_walls, m_config.skin, time(), *m_broad, m_laws, pairHistory, wallHistory,
                        outputCopy || !m_integrator->singleEvaluation(), m_forceWork.threads);
     if (!countAsBuild) m_list.builds = builds;
+    if (m_flow.active()) m_flow.refreshCandidates(m_store, m_maxRadius, m_config.skin, ownedEnd);
+}
+
+ParticleId World::admitParticles(const std::vector<NewParticle>& entering) {
+    const ParticleId first = m_nextId;
+    m_nextId += static_cast<ParticleId>(entering.size());
+    m_flow.bookInserted(entering);
+    for (const NewParticle& p : entering) {
+        m_maxRadius = std::max(m_maxRadius, p.radius * m_scale);
+        m_minRadius = std::min(m_minRadius, p.radius * m_scale);
+        if (p.shape != model::kDiskShape) m_shapes.anyPolygon = true;
+    }
+    return first;
 }
 
 std::size_t World::integratorColumns() const noexcept {
@@ -360,6 +373,10 @@ void World::adoptClock(const World& local) {
     m_list.builds = local.m_list.builds;
     m_timers = local.m_timers;
     m_wallForce = local.m_wallForce;
+    m_flow = local.m_flow;
+    m_pool = local.m_pool;
+    m_nextId = local.m_nextId;
+    m_shapes.anyPolygon = local.m_shapes.anyPolygon;
     std::stringstream flags;  // the integrator's flags (gear: started); its columns follow the particles
     local.m_integrator->save(flags);
     m_integrator->load(flags, local.m_store.size());

@@ -136,6 +136,21 @@ public:
     model::ParticleStore& storeForHalo() noexcept { return m_store; }
     /// Wall forces of all ranks (the halo sums them after the forces).
     std::vector<Vec2>& wallForceForSum() noexcept { return m_wallForce; }
+    /// Particles in and out are the domain decomposition's (finishStep leaves them alone).
+    void setExternalFlow(bool on) noexcept { m_externalFlow = on; }
+    /// Slots (ascending, owned ones only) that leave through an outlet at the current time; booked.
+    std::vector<std::uint32_t> flowLeaving() { return m_flow.leaving(m_store, time()); }
+    /// What enters at the current time, placed against `everyone` (every rank's particles, the
+    /// same on every rank) and the walls; the drops are booked (not the insertions).
+    std::vector<NewParticle> flowEntering(const model::ParticleStore& everyone) {
+        return m_flow.entering(everyone, m_walls, m_pool, time(), m_config.dt, gravityAt(time()));
+    }
+    ParticleFlow& flowForDomain() noexcept { return m_flow; }
+    /// [m] the smallest radius of all ranks (tunnelling guard), after particles left.
+    void setMinRadius(Real r) noexcept { m_minRadius = r; }
+    /// Books particles that enter (flowEntering) and returns the id of the first: ids, radius
+    /// bounds and the polygon flag follow them as in a one-rank run. The caller stores them.
+    ParticleId admitParticles(const std::vector<NewParticle>& entering);
     /// The gathered copy of a decomposed run: takes the step, walls, size scale, laws, counters
     /// and integrator flags of `local` (one rank's world of the same scene).
     void adoptClock(const World& local);
@@ -249,6 +264,7 @@ private:
     ParticleId m_nextId = 0;           ///< id of the next inserted particle
     std::size_t m_lawChangesDone = 0;  ///< entries of m_config.lawChanges applied
     bool m_lawRebuildDue = false;      ///< a law change regroups the lists before the next forces
+    bool m_externalFlow = false;       ///< particles in and out are the domain decomposition's
     LawTable m_baseLaws;               ///< the laws of t = 0
     Real m_scale = 1;                  ///< global size scale s of the radius column and corners
     Real m_scaleAtRebuild = 1;         ///< s at the last neighbour rebuild

@@ -19,7 +19,11 @@
 #   - checkpoints do not depend on the rank count: the bed checkpointed on 3 ranks at 3.25 s
 #     and resumed on 3 ranks ends byte for byte as the uninterrupted 3-rank run; resumed on 1
 #     and 2 ranks, within the bounds above;
-#   - what runs on one rank only (drop sources) is refused with exit status 2 and "mpirun".
+#   - particles in and out: a hopper fed by an inlet and drained by an outlet
+#     (examples/machines/hopper_inlet.toml, 200 emitted, ~150 removed by t = 0.5 s) on 2 and 3
+#     ranks, and a pile fed by a REL drop source (pile_dropsource.toml) to t = 0.12 s on 2 ranks:
+#     the same particles (ids) within the bounds above, the same flow counters in summary.json;
+#   - what runs on one rank only (pull springs) is refused with exit status 2 and "mpirun".
 # Usage: parallel_dem_run.sh GRANULAB EXAMPLES_DIR WORKDIR MPIEXEC [MPI flags ...]
 set -eu
 granulab=$1 examples=$2 work=$3 mpiexec=$4
@@ -62,12 +66,23 @@ on_ranks 3 "$granulab" run "$heap" $common --set output.series_interval=0.01 --s
     --resume "$work/heap3"
 "$granulab" run "$heap" $common --set output.series_interval=0.01 --set run.end_time=0.11 --resume "$work/heap"
 
-# Drop sources run on one rank only: refused with exit status 2, naming mpirun.
+# Particles in and out.
+hopper="$examples/machines/hopper_inlet.toml"
+pile="$examples/machines/pile_dropsource.toml"
+"$granulab" run "$hopper" $common --set run.end_time=0.5 --out "$work/hopper1"
+for np in 2 3; do
+    on_ranks $np "$granulab" run "$hopper" $common --set run.end_time=0.5 --out "$work/hopper$np"
+done
+"$granulab" run "$pile" $common --set run.end_time=0.12 --out "$work/pile1"
+on_ranks 2 "$granulab" run "$pile" $common --set run.end_time=0.12 --out "$work/pile2"
+
+# Pull springs run on one rank only: refused with exit status 2, naming mpirun.
+cp "$examples/disks_in_box.toml" "$work/spring.toml"
+printf '\n[[spring]]\nparticle = 0\npull_start = [0.1, 0.3]\n' >>"$work/spring.toml"
 status=0
-on_ranks 2 "$granulab" run "$examples/machines/pile_dropsource.toml" -q --out "$work/refused" \
-    2>"$work/refused.log" || status=$?
+on_ranks 2 "$granulab" run "$work/spring.toml" -q --out "$work/refused" 2>"$work/refused.log" || status=$?
 if [ "$status" -ne 2 ] || ! grep -q "mpirun" "$work/refused.log"; then
-    echo "a drop source on 2 ranks: exit status $status, expected 2 with a message naming mpirun"
+    echo "a pull spring on 2 ranks: exit status $status, expected 2 with a message naming mpirun"
     cat "$work/refused.log"
     exit 1
 fi
@@ -129,6 +144,19 @@ for run in ("bed1", "bed2", "bed3", "bed2flat"):
 for run in ("resume1", "resume2"):
     close("whole3", run)
 close("heap", "heap3", dv=1e-5)
+for run in ("hopper2", "hopper3"):
+    close("hopper1", run)
+close("pile1", "pile2")
+import json
+for ref, run in (("hopper1", "hopper2"), ("hopper1", "hopper3"), ("pile1", "pile2")):
+    a = json.load(open(f"{work}/{ref}/summary.json"))["flow"]
+    b = json.load(open(f"{work}/{run}/summary.json"))["flow"]
+    for key in ("inserted", "removed", "skipped", "sources", "inlets"):
+        if a[key] != b[key]:
+            failures.append(f"{run} flow {key}: {b[key]} against {a[key]}")
+    for key in ("mass_in", "mass_out"):
+        if abs(a[key] - b[key]) > 1e-12 * max(abs(a[key]), 1e-300):
+            failures.append(f"{run} flow {key}: {b[key]} against {a[key]}")
 same("bed2", "bed2again")
 same("bed2flat", "bed2flatagain")
 same("whole3", "resume3")

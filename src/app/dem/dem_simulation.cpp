@@ -511,9 +511,6 @@ private:
     /// The engine features that run on one rank only for now: a clear refusal (exit status 2).
     static void checkDecomposable(const model::SceneDef& scene) {
         std::vector<std::string> missing;
-        const auto& m = scene.machines;
-        if (!m.sources.empty() || !m.inlets.empty() || !m.outlets.empty())
-            missing.push_back("particle sources, inlets and outlets");
         if (scene.fluid.present) missing.push_back("[fluid]");
         if (scene.attraction.present) missing.push_back("[attraction]");
         if (!scene.springs.empty()) missing.push_back("pull springs");

@@ -192,6 +192,14 @@ DomainWorld::DomainWorld(Communicator& comm, World whole, DomainConfig config, c
     const model::ParticleStore& s = m_world.store();
     const int ranks = comm.size(), me = comm.rank();
     m_particles = s.size();
+    m_world.setExternalFlow(true);
+    if (me != 0) {  // removals are booked by the rank that removes, and summed: start from the root's
+        FlowCounters& c = m_world.flowForDomain().countersForDomain();
+        std::fill(c.outletRemoved.begin(), c.outletRemoved.end(), 0);
+        std::fill(c.outletMass.begin(), c.outletMass.end(), 0.0);
+        c.removed = 0;
+        c.massOut = 0;
+    }
     m_integratorColumns = m_world.integratorColumns();
     m_owned = s.size();  // every particle, for the first weights
     Real lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
@@ -323,6 +331,12 @@ void DomainWorld::assemble(Incoming in, bool countAsBuild) {
 }
 
 void DomainWorld::exchange(bool mayBalance) {
+    exchangeWithFlow({}, {}, 0, mayBalance);
+}
+
+void DomainWorld::exchangeWithFlow(const std::vector<std::uint32_t>& leaving,
+                                   const std::vector<NewParticle>& entering, ParticleId firstId,
+                                   bool mayBalance) {
     const double started = wallSeconds();
     const int ranks = m_comm.size();
     const model::ParticleStore& s = m_world.store();
@@ -343,11 +357,11 @@ void DomainWorld::exchange(bool mayBalance) {
     std::vector<std::uint32_t> destBegin(m_owned + 1, 0);
     std::vector<int> dests;
     std::vector<Real> row(k);
-    for (std::size_t i = 0; i < m_owned; ++i) {
-        const Real c = m_partition.axis == 0 ? s.x[i] : s.y[i];
+    const auto send = [&](const ParticleRecord& record, std::size_t slot) {
+        const Real c = m_partition.axis == 0 ? record.x : record.y;
         const int owner = m_partition.owner(c);
-        m_world.integratorRow(i, row.data());
-        const ParticleRecord rec = recordOf(s, i, owner);
+        ParticleRecord rec = record;
+        rec.owner = owner;
         auto& mine = out[static_cast<std::size_t>(owner)];
         mine.owned.push_back(rec);
         mine.ownedRows.insert(mine.ownedRows.end(), row.begin(), row.end());
@@ -358,7 +372,46 @@ void DomainWorld::exchange(bool mayBalance) {
             theirs.ghostRows.insert(theirs.ghostRows.end(), row.begin(), row.end());
             dests.push_back(r);
         });
-        destBegin[i + 1] = static_cast<std::uint32_t>(dests.size());
+        if (slot < m_owned) destBegin[slot + 1] = static_cast<std::uint32_t>(dests.size());
+    };
+    std::size_t gone = 0;  // leaving is ascending
+    for (std::size_t i = 0; i < m_owned; ++i) {
+        if (gone < leaving.size() && leaving[gone] == i) {  // through an outlet: sent nowhere
+            ++gone;
+            destBegin[i + 1] = static_cast<std::uint32_t>(dests.size());
+            continue;
+        }
+        m_world.integratorRow(i, row.data());
+        send(recordOf(s, i, 0), i);
+    }
+    // New particles: created by the rank whose slab holds them (every rank has the same list),
+    // as a one-rank run inserts them: radius and inertia at the current size scale, its weight
+    // as the force until the next evaluation, integrator state zero.
+    std::fill(row.begin(), row.end(), 0.0);
+    const Real scale = m_world.sizeScale();
+    const Vec2 g = m_world.gravity();
+    for (std::size_t k = 0; k < entering.size(); ++k) {
+        const NewParticle& p = entering[k];
+        if (m_partition.owner(m_partition.axis == 0 ? p.position.x : p.position.y) != m_comm.rank()) continue;
+        const Real inertia = p.inertia * scale * scale;
+        const ParticleRecord rec{p.position.x,
+                                 p.position.y,
+                                 p.velocity.x,
+                                 p.velocity.y,
+                                 p.angle,
+                                 p.omega,
+                                 p.mass * g.x,
+                                 p.mass * g.y,
+                                 0.0,
+                                 p.radius * scale,
+                                 p.mass,
+                                 p.mass > 0 ? 1.0 / p.mass : 0.0,
+                                 inertia > 0 ? 1.0 / inertia : 0.0,
+                                 firstId + static_cast<ParticleId>(k),
+                                 p.material,
+                                 p.shape,
+                                 0};
+        send(rec, m_owned);  // no old slot: no history
     }
     // A pair's history goes wherever one of its owned particles goes (the receiver keeps it when
     // it holds both); a wall pair's goes with its particle to the new owner.
@@ -413,6 +466,7 @@ void DomainWorld::exchange(bool mayBalance) {
     m_stats.imbalanceSum += m_stats.imbalance;
     std::uint64_t counts[2] = {m_stats.owned, m_stats.ghosts};
     m_comm.allSum(std::span<std::uint64_t>(counts, 2));
+    m_particles = counts[0];
     m_stats.haloShare = counts[0] > 0 ? static_cast<double>(counts[1]) / static_cast<double>(counts[0]) : 0.0;
     m_stats.exchangeSeconds += wallSeconds() - started;
 }
@@ -485,20 +539,70 @@ std::uint32_t DomainWorld::step(bool stop) {
     if (status & kStepFieldFailed) return status;
     if (flags[0] > 0) exchange();
     status |= m_world.finishStep();
-    // Wall forces of all ranks (each counts its own particles' contacts) and the overlap flag.
+    // Particles leave through this rank's outlets; sources and inlets place theirs against all.
+    std::vector<std::uint32_t> leaving;
+    std::vector<NewParticle> entering;
+    const bool flow = m_world.flow().active();
+    if (flow) {
+        leaving = m_world.flowLeaving();
+        if (m_world.flow().insertionDue(m_world.time(), m_world.config().dt))
+            entering = m_world.flowEntering(everyParticle());
+    }
+    // Wall forces of all ranks (each counts its own particles' contacts), the overlap flag and
+    // the particles that left.
     started = wallSeconds();
     std::vector<Vec2>& wallForce = m_world.wallForceForSum();
-    std::vector<double> sums(2 * wallForce.size() + 1);
+    std::vector<double> sums(2 * wallForce.size() + 2);
     for (std::size_t w = 0; w < wallForce.size(); ++w) {
         sums[2 * w] = wallForce[w].x;
         sums[2 * w + 1] = wallForce[w].y;
     }
-    sums.back() = (status & kStepDeepOverlap) ? 1.0 : 0.0;
+    sums[sums.size() - 2] = (status & kStepDeepOverlap) ? 1.0 : 0.0;
+    sums.back() = static_cast<double>(leaving.size());
     m_comm.allSum(sums);
     for (std::size_t w = 0; w < wallForce.size(); ++w) wallForce[w] = {sums[2 * w], sums[2 * w + 1]};
-    if (sums.back() > 0) status |= kStepDeepOverlap;
+    if (sums[sums.size() - 2] > 0) status |= kStepDeepOverlap;
+    if (flow && (sums.back() > 0 || !entering.empty())) {
+        const ParticleId firstId = m_world.admitParticles(entering);
+        exchangeWithFlow(leaving, entering, firstId);
+        if (sums.back() > 0) {  // the smallest radius of what stays (tunnelling guard)
+            double smallest = 1e300;
+            const auto& r = m_world.store().radius;
+            for (std::size_t i = 0; i < m_owned; ++i) smallest = std::min(smallest, r[i]);
+            m_comm.allMin(std::span<double>(&smallest, 1));
+            m_world.setMinRadius(smallest);
+        }
+    }
     m_stats.reduceSeconds += wallSeconds() - started;
     return status;
+}
+
+model::ParticleStore DomainWorld::everyParticle() {
+    struct Light {
+        Real x, y, vx, vy, radius;
+        ParticleId id;
+    };
+    const model::ParticleStore& s = m_world.store();
+    std::vector<Light> mine(m_owned);
+    for (std::size_t i = 0; i < m_owned; ++i)
+        mine[i] = {s.x[i], s.y[i], s.vx[i], s.vy[i], s.radius[i], s.id[i]};
+    // Every rank's list to every rank (the same bytes to each).
+    const ByteBuffer bytes = packPod(std::span<const Light>(mine));
+    std::vector<ByteBuffer> out(static_cast<std::size_t>(m_comm.size()), bytes);
+    std::vector<Light> all;
+    for (const ByteBuffer& b : m_comm.allToAll(std::move(out))) unpackPod(b, all);
+    std::sort(all.begin(), all.end(), [](const Light& a, const Light& b) { return a.id < b.id; });
+    model::ParticleStore every;
+    every.reserve(all.size());
+    for (const Light& l : all) {
+        every.x.push_back(l.x);
+        every.y.push_back(l.y);
+        every.vx.push_back(l.vx);
+        every.vy.push_back(l.vy);
+        every.radius.push_back(l.radius);
+        every.id.push_back(l.id);
+    }
+    return every;  // only these columns: what placement reads
 }
 
 std::size_t DomainWorld::memoryBytes() {
@@ -529,6 +633,13 @@ void DomainWorld::gather(World& copy) {
     w.put(mine.ownedRows);
     w.put(mine.pairs);
     w.put(mine.walls);
+    // Removals are booked by the rank that removed: summed (the other counters agree everywhere).
+    const FlowCounters& mineCounted = m_world.flow().counters();
+    std::vector<double> removed(mineCounted.outletRemoved.begin(), mineCounted.outletRemoved.end());
+    removed.insert(removed.end(), mineCounted.outletMass.begin(), mineCounted.outletMass.end());
+    removed.push_back(static_cast<double>(mineCounted.removed));
+    removed.push_back(mineCounted.massOut);
+    m_comm.allSum(removed);
     const std::vector<ByteBuffer> all = m_comm.gather(w.take());
     if (!m_comm.root()) return;
     Incoming in;
@@ -556,6 +667,14 @@ void DomainWorld::gather(World& copy) {
     const std::vector<PairHistory> pairs = pairHistoryInSlots(std::move(in.pairs), slotOfId);
     const std::vector<PairHistory> walls = wallHistoryInSlots(in.walls, slotOfId);
     copy.adoptClock(m_world);
+    FlowCounters& counted = copy.flowForDomain().countersForDomain();
+    const std::size_t outlets = counted.outletRemoved.size();
+    for (std::size_t o = 0; o < outlets; ++o) {
+        counted.outletRemoved[o] = static_cast<std::uint64_t>(removed[o]);
+        counted.outletMass[o] = removed[outlets + o];
+    }
+    counted.removed = static_cast<std::uint64_t>(removed[2 * outlets]);
+    counted.massOut = removed[2 * outlets + 1];
     const std::size_t n = store.size();
     copy.replaceParticles(std::move(store), rows, pairs, walls, n, false, true);
     copy.evaluateForOutput();

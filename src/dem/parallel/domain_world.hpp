@@ -59,7 +59,7 @@ public:
     const World& local() const noexcept { return m_world; }
     std::int64_t stepIndex() const noexcept { return m_world.stepIndex(); }
     Real time() const noexcept { return m_world.time(); }
-    /// All ranks' particles (constant: sources and outlets run on one rank only).
+    /// All ranks' particles (after the last exchange: sources and outlets change it).
     std::size_t particles() const noexcept { return m_particles; }
     const SlabPartition& partition() const noexcept { return m_partition; }
     const DomainStats& stats() const noexcept { return m_stats; }
@@ -80,6 +80,13 @@ private:
     struct Incoming;
     /// Migration, ghosts and the new lists (collective).
     void exchange(bool mayBalance = true);
+    /// The particles of this rank's outlets and of every source and inlet: what leaves is not
+    /// sent on, what enters is created by its owner; then an exchange (collective).
+    void exchangeWithFlow(const std::vector<std::uint32_t>& leaving, const std::vector<NewParticle>& entering,
+                          ParticleId firstId, bool mayBalance = true);
+    /// Sources and inlets place grains against every rank's particles: the owned ones of all
+    /// ranks, in id order (positions, velocities and radii; collective).
+    model::ParticleStore everyParticle();
     /// Builds this rank's World from what it received (owned and ghost records, history).
     void assemble(Incoming in, bool countAsBuild);
     /// Owners send their ghosts' state; ghosts take it.
