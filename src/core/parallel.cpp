@@ -3,6 +3,10 @@
 #include "core/parallel.hpp"
 
 #include <sched.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
 
 namespace granulab {
 
@@ -13,6 +17,16 @@ int availableCores() noexcept {
     if (sched_getaffinity(0, sizeof(set), &set) != 0) return 1;
     const int n = CPU_COUNT(&set);
     return n > 0 ? n : 1;
+}
+
+int defaultThreads() noexcept {
+    const int cores = availableCores();
+    const char* local = std::getenv("OMPI_COMM_WORLD_LOCAL_SIZE");
+    if (!local) local = std::getenv("MPI_LOCALNRANKS");
+    const long ranks = local ? std::strtol(local, nullptr, 10) : 1;
+    const long online = sysconf(_SC_NPROCESSORS_ONLN);
+    if (ranks <= 1 || cores < online) return cores;  // alone, or bound to its own cores
+    return static_cast<int>(std::max<long>(1, cores / ranks));
 }
 
 }  // namespace granulab

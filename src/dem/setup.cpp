@@ -241,7 +241,7 @@ WorldConfig makeWorldConfig(const model::SceneDef& scene, Real maxRadius) {
     c.integrator.corrector = scene.dem.pcCorrector;
     c.integrator.gearC0 = scene.dem.gearC0;
     c.broadPhase = broadPhaseOf(scene);
-    c.threads = scene.run.threads > 0 ? scene.run.threads : availableCores();
+    c.threads = scene.run.threads > 0 ? scene.run.threads : defaultThreads();
     c.sortEveryRebuilds = static_cast<int>(scene.dem.sortEvery);
     c.overlapGuard = scene.dem.overlapGuard ? 0.01 : 0.0;
     c.weight = scene.dem.weight;

@@ -409,6 +409,14 @@ public:
 
     /// "2 threads", or "1 of 2 threads" while the particles are too few to share (World::team).
     std::string threadsNote() const {
+        if (m_domain) {  // the root's share; the others alike
+            const dem::World& local = m_domain->local();
+            const int ranks = worldCommunicator().size();
+            return fmt::format("{} ranks (slabs across {}{}) x {} thread{} on the root", ranks,
+                               m_domain->partition().axis == 0 ? "x" : "y",
+                               m_scene.run.loadBalance ? ", balanced by contacts" : "", local.team(),
+                               local.team() == 1 ? "" : "s");
+        }
         const int asked = m_world.threads(), used = m_world.team();
         if (used == asked) return fmt::format("{} thread{}", used, used == 1 ? "" : "s");
         return fmt::format(

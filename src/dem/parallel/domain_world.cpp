@@ -202,13 +202,21 @@ DomainWorld::DomainWorld(Communicator& comm, World whole, DomainConfig config, c
     }
     m_integratorColumns = m_world.integratorColumns();
     m_owned = s.size();  // every particle, for the first weights
+    // The extent of the particles and the walls (a scene that sources fill starts empty).
     Real lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
-    for (std::size_t k = 0; k < s.size(); ++k) {
-        lo[0] = std::min(lo[0], s.x[k]);
-        hi[0] = std::max(hi[0], s.x[k]);
-        lo[1] = std::min(lo[1], s.y[k]);
-        hi[1] = std::max(hi[1], s.y[k]);
+    const auto extend = [&](Vec2 p) {
+        lo[0] = std::min(lo[0], p.x);
+        hi[0] = std::max(hi[0], p.x);
+        lo[1] = std::min(lo[1], p.y);
+        hi[1] = std::max(hi[1], p.y);
+    };
+    for (std::size_t k = 0; k < s.size(); ++k) extend({s.x[k], s.y[k]});
+    for (const auto& seg : m_world.walls().segments) {
+        extend(seg.a);
+        extend(seg.b);
     }
+    for (const auto& src : m_world.flow().config().sources) extend(src.position);
+    if (!(hi[0] >= lo[0])) lo[0] = hi[0] = lo[1] = hi[1] = 0;  // nothing at all
     // Slabs across the longer extent.
     const int axis = cuts && cuts->ranks() == ranks ? cuts->axis : (hi[1] - lo[1] > hi[0] - lo[0] ? 1 : 0);
     if (cuts && cuts->ranks() == ranks) {
@@ -217,8 +225,9 @@ DomainWorld::DomainWorld(Communicator& comm, World whole, DomainConfig config, c
         // Every rank holds every particle: the root's alone make the histogram.
         const std::vector<Real> weights = me == 0 ? workWeights() : std::vector<Real>{};
         const std::vector<Real>& coords = axis == 0 ? s.x : s.y;
-        m_partition = balancedSlabs(
-            comm, axis, std::span<const Real>(coords.data(), me == 0 ? coords.size() : 0), weights);
+        m_partition =
+            balancedSlabs(comm, axis, std::span<const Real>(coords.data(), me == 0 ? coords.size() : 0),
+                          weights, lo[axis], hi[axis]);
     } else {
         m_partition = uniformSlabs(axis, lo[axis], hi[axis], ranks);
     }
@@ -346,7 +355,8 @@ void DomainWorld::exchangeWithFlow(const std::vector<std::uint32_t>& leaving,
             const std::vector<Real> w = workWeights();
             const std::vector<Real>& coords = m_partition.axis == 0 ? s.x : s.y;
             m_partition =
-                balancedSlabs(m_comm, m_partition.axis, std::span<const Real>(coords.data(), m_owned), w);
+                balancedSlabs(m_comm, m_partition.axis, std::span<const Real>(coords.data(), m_owned), w,
+                              m_partition.lower(1), m_partition.upper(ranks - 2));
             ++m_stats.rebalances;
         }
     }

@@ -28,7 +28,7 @@ SlabPartition uniformSlabs(int axis, Real lo, Real hi, int ranks) {
 }
 
 SlabPartition balancedSlabs(Communicator& comm, int axis, std::span<const Real> coords,
-                            std::span<const Real> weights) {
+                            std::span<const Real> weights, Real emptyLo, Real emptyHi) {
     const int ranks = comm.size();
     double range[2] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
     for (const Real c : coords) {  // [min, -max] in one reduction
@@ -37,7 +37,7 @@ SlabPartition balancedSlabs(Communicator& comm, int axis, std::span<const Real> 
     }
     comm.allMin(range);
     const Real lo = range[0], hi = -range[1];
-    if (!(hi > lo)) return uniformSlabs(axis, std::isfinite(lo) ? lo : 0, std::isfinite(lo) ? lo : 0, ranks);
+    if (!(hi > lo)) return uniformSlabs(axis, emptyLo, emptyHi, ranks);
     const std::size_t bins = 256 * static_cast<std::size_t>(ranks);
     const Real width = (hi - lo) / static_cast<Real>(bins);
     std::vector<double> histogram(bins, 0.0);
@@ -48,6 +48,7 @@ SlabPartition balancedSlabs(Communicator& comm, int axis, std::span<const Real> 
     comm.allSum(histogram);
     double total = 0;
     for (const double h : histogram) total += h;
+    if (!(total > 0)) return uniformSlabs(axis, emptyLo, emptyHi, ranks);
     SlabPartition p;
     p.axis = axis;
     double below = 0;  // weight in bins [0, b)

@@ -38,8 +38,9 @@ SlabPartition uniformSlabs(int axis, Real lo, Real hi, int ranks);
 /// Collective: cuts that give every rank the same share of the total weight, from a histogram
 /// of 256 bins per rank over the particles' extent (every rank passes its own particles'
 /// coordinates along `axis` [m] and weights; the result is the same on every rank). A rank
-/// whose share falls inside one bin gets a cut interpolated within it.
+/// whose share falls inside one bin gets a cut interpolated within it. Without any weight (no
+/// particles yet: a pile that a source will build) the slabs are equal over [lo, hi].
 SlabPartition balancedSlabs(Communicator& comm, int axis, std::span<const Real> coords,
-                            std::span<const Real> weights);
+                            std::span<const Real> weights, Real lo, Real hi);
 
 }  // namespace granulab::dem
