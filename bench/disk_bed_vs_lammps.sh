@@ -2,30 +2,33 @@
 # Settled-bed throughput benchmark: granulab (examples/bench/disk_bed.toml) against LAMMPS
 # (../shared/peers/in.disk2d_bed.lmp, run unedited through bench/lammps/disk_bed_wrap.lmp),
 # one after the other, on the same N = NX*NX disks: serially, or (-p P) LAMMPS on P MPI ranks
-# (mpirun -np P --bind-to core) against granulab on P threads. Prints throughput of the timed
+# (mpirun -np P --bind-to core) against granulab on P threads, or (-m) granulab on P MPI ranks
+# too (domain decomposition, docs/physics/dem-mpi.md). Prints throughput of the timed
 # segment, whole-job wall times, final kinetic energies and bed heights of both, and a verdict.
 # See bench/README.md.
 #
-# Usage: bench/disk_bed_vs_lammps.sh [-n NX] [-r REPEATS] [-s SETTLE] [-t TSTEPS] [-p P] [-k]
+# Usage: bench/disk_bed_vs_lammps.sh [-n NX] [-r REPEATS] [-s SETTLE] [-t TSTEPS] [-p P] [-m] [-k]
 #   -n NX       disks per row and number of rows (default 100 -> N = 10,000)
 #   -r REPEATS  run each code REPEATS times, report the median timings (default 1)
 #   -s SETTLE   damped settling steps (default 60000, as the peer file)
 #   -t TSTEPS   timed steps (default 10000, as the peer file)
 #   -p P        LAMMPS on P MPI ranks, granulab on P threads (default 1: both serial)
+#   -m          granulab on P MPI ranks of one thread each, as LAMMPS (with -p)
 #   -k          keep the work directory (printed at the end)
 # Env: PEER_DIR (folder of in.disk2d_bed.lmp; default <repo>/../shared/peers),
 #      GRANULAB (binary; default <repo>/build/granulab, built by scripts/setup.sh), LMP (default lmp),
 #      RESULTS_DIR (default <repo>/bench/results/<hostname>).
 set -euo pipefail
 
-NX=100 REPEATS=1 SETTLE=60000 TSTEPS=10000 KEEP=0 PROCS=1
-while getopts "n:r:s:t:p:kh" opt; do
+NX=100 REPEATS=1 SETTLE=60000 TSTEPS=10000 KEEP=0 PROCS=1 MPI=0
+while getopts "n:r:s:t:p:mkh" opt; do
     case $opt in
         n) NX=$OPTARG ;;
         r) REPEATS=$OPTARG ;;
         s) SETTLE=$OPTARG ;;
         t) TSTEPS=$OPTARG ;;
         p) PROCS=$OPTARG ;;
+        m) MPI=1 ;;
         k) KEEP=1 ;;
         h) sed -n '2,18p' "$0"; exit 0 ;;
         *) sed -n '2,18p' "$0" >&2; exit 2 ;;
@@ -54,6 +57,8 @@ if ((PROCS > 1)); then
     export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
     LAUNCH=(mpirun -np "$PROCS" --bind-to core)
 fi
+GLAUNCH=()  # granulab: P threads, or (-m) P ranks of one thread
+if ((MPI == 1 && PROCS > 1)); then GLAUNCH=("${LAUNCH[@]}"); fi
 if busy=$(pgrep -af 'granulab_tests|granulab_bench|granulab run|lmp -in' 2>/dev/null) && [[ -n $busy ]]; then
     echo "warning: other jobs are running; timings may be disturbed:" >&2
     echo "$busy" | cut -c1-120 >&2
@@ -76,7 +81,9 @@ hf = ny * a * math.sqrt(3) / 2
 print(f'{nx*a+0.3:.10g} {hf:.10g} {nx*a+0.56:.10g} {max(400.0, 4*hf):.10g} '
       f'{(s+2000)*1e-4:.10g} {(s+2000+t)*1e-4:.10g} {s*1e-4:.10g}')")
 
-gset=(--threads "$PROCS"
+GTHREADS=$PROCS
+((MPI == 0)) || GTHREADS=1
+gset=(--threads "$GTHREADS"
       --set "block[0].region=[0.1,0.0,$XMAX,$YMAX]"
       --set "wall[0].points=[[0.0,$WTOP],[0.0,0.0],[$W,0.0],[$W,$WTOP]]"
       --set "dem.damping[0].to=$T_DAMP"
@@ -85,7 +92,7 @@ gset=(--threads "$PROCS"
 
 now() { date +%s.%N; }
 
-echo "disk bed: N = $NX x $NY = $((NX * NY)) disks, settle $SETTLE + 2000 steps, timed $TSTEPS steps, $REPEATS repeat(s), $PROCS rank(s) / thread(s)"
+echo "disk bed: N = $NX x $NY = $((NX * NY)) disks, settle $SETTLE + 2000 steps, timed $TSTEPS steps, $REPEATS repeat(s), LAMMPS on $PROCS rank(s), granulab on $PROCS $( ((MPI == 1)) && echo "rank(s)" || echo "thread(s)")"
 for ((k = 1; k <= REPEATS; ++k)); do
     d="$WORK/rep$k"
     mkdir -p "$d/lammps"
@@ -104,7 +111,7 @@ for ((k = 1; k <= REPEATS; ++k)); do
         echo "[$k/$REPEATS] granulab ..." >&2
         local t0 t1
         t0=$(now)
-        "$GRANULAB" run "$SCENE" --out "$d/granulab" --quiet "${gset[@]}" ||
+        "${GLAUNCH[@]}" "$GRANULAB" run "$SCENE" --out "$d/granulab" --quiet "${gset[@]}" ||
             { echo "error: granulab failed (output in $d/granulab)" >&2; KEEP=1; trap - EXIT; exit 1; }
         t1=$(now)
         wg=$(python3 -c "print($t1 - $t0)")
@@ -119,6 +126,7 @@ mkdir -p "$RESULTS_DIR"
 rc=0
 CSV="$RESULTS_DIR/disk_bed.csv"
 ((PROCS == 1)) || CSV="$RESULTS_DIR/disk_bed_p$PROCS.csv"  # P ranks / threads: a table of its own
+((PROCS == 1 || MPI == 0)) || CSV="$RESULTS_DIR/disk_bed_p${PROCS}_mpi.csv"
 python3 - "$WORK" "$REPEATS" "$NX" "$NY" "$CSV" "$HOST" "$TSTEPS" <<'EOF' || rc=$?
 import csv, datetime, json, math, os, re, statistics, sys
 
@@ -206,7 +214,7 @@ def row(name, a, b, r=None, fmt="{:.4g}"):
     print(f"  {name:<{w}} {fmt.format(a):>13} {fmt.format(b):>13} {ra:>9}")
 
 procs = re.match(r"Loop time of \S+ on (\d+) procs", [l for l in open(os.path.join(d, "lammps", "log.lammps")) if l.startswith("Loop time of")][-1]).group(1)
-print(f"LAMMPS: {lg['version']} ({procs} MPI rank(s), {lg['atoms']} atoms); granulab: {gs['version']} ({gs['integrator']}, {gs['broad_phase']}, {gs.get('threads', 1)} thread(s))")
+print(f"LAMMPS: {lg['version']} ({procs} MPI rank(s), {lg['atoms']} atoms); granulab: {gs['version']} ({gs['integrator']}, {gs['broad_phase']}, {gs.get('ranks', 1)} MPI rank(s) x {gs.get('threads', 1)} thread(s))")
 med_note = f" (median of {reps})" if reps > 1 else ""
 print(f"  {'quantity':<{w}} {'granulab':>13} {'LAMMPS':>13} {'g/L':>9}")
 row(f"timed particle-steps/s{med_note}", tg, tl, tg / tl, "{:.4e}")

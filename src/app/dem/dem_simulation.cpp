@@ -564,7 +564,7 @@ private:
                        (status & dem::kStepDeepOverlap ? kSimOverlap : 0u);
             if (m_domain->stopRequested()) return kSimInterrupted;  // every rank after the same step
         }
-        return kSimOk;
+        return m_domain->settle() & dem::kStepDeepOverlap ? kSimOverlap : kSimOk;
     }
 
     nlohmann::json domainKeys() const {

@@ -123,24 +123,32 @@ std::uint32_t mortonKey(std::uint32_t cx, std::uint32_t cy) noexcept {
     return key;
 }
 
-/// Slot-keyed history of the pairs whose both ids are in `slotOfId` (sorted id, slot), preferring
+/// Slots of the particles of a store by id: a dense table (ids are below the next id of the
+/// run, so its size follows the particle count).
+class SlotOfId {
+public:
+    explicit SlotOfId(const model::ParticleStore& s) {
+        ParticleId top = 0;
+        for (const ParticleId id : s.id) top = std::max(top, id);
+        m_slot.assign(s.size() ? top + std::size_t{1} : 0, kRemovedSlot);
+        for (std::size_t k = 0; k < s.size(); ++k) m_slot[s.id[k]] = static_cast<std::uint32_t>(k);
+    }
+    std::uint32_t operator()(ParticleId id) const noexcept {
+        return id < m_slot.size() ? m_slot[id] : kRemovedSlot;
+    }
+
+private:
+    std::vector<std::uint32_t> m_slot;
+};
+
+/// Slot-keyed history (sorted by key) of the pairs whose both ids are in the store, preferring
 /// the record of a's owner when two ranks sent the same pair.
-std::vector<PairHistory> pairHistoryInSlots(
-    std::vector<IdHistory> records, const std::vector<std::pair<ParticleId, std::uint32_t>>& slotOfId) {
-    std::sort(records.begin(), records.end(), [](const IdHistory& p, const IdHistory& q) {
-        if (p.a != q.a) return p.a < q.a;
-        if (p.b != q.b) return p.b < q.b;
-        return p.fromOwnerOfA > q.fromOwnerOfA;
-    });
-    const auto slotOf = [&](ParticleId id) {
-        auto it =
-            std::lower_bound(slotOfId.begin(), slotOfId.end(), std::pair<ParticleId, std::uint32_t>{id, 0});
-        return it != slotOfId.end() && it->first == id ? it->second : kRemovedSlot;
-    };
+std::vector<PairHistory> pairHistoryInSlots(std::vector<IdHistory> records, const SlotOfId& slotOf) {
+    std::stable_partition(records.begin(), records.end(),
+                          [](const IdHistory& r) { return r.fromOwnerOfA != 0; });
     std::vector<PairHistory> out;
-    for (std::size_t k = 0; k < records.size(); ++k) {
-        if (k > 0 && records[k].a == records[k - 1].a && records[k].b == records[k - 1].b) continue;
-        IdHistory r = records[k];
+    out.reserve(records.size());
+    for (IdHistory& r : records) {
         std::uint32_t sa = slotOf(r.a), sb = slotOf(r.b);
         if (sa == kRemovedSlot || sb == kRemovedSlot) continue;
         if (sa > sb) {
@@ -150,29 +158,21 @@ std::vector<PairHistory> pairHistoryInSlots(
         }
         out.push_back({pairKey(sa, sb), r.xi, r.zeta, r.areaOld, r.features});
     }
-    std::sort(out.begin(), out.end());
+    std::stable_sort(out.begin(), out.end());  // by key; the preferred record first among equals
+    out.erase(std::unique(out.begin(), out.end(),
+                          [](const PairHistory& p, const PairHistory& q) { return p.key == q.key; }),
+              out.end());
     return out;
 }
 
-std::vector<PairHistory> wallHistoryInSlots(
-    const std::vector<IdHistory>& records,
-    const std::vector<std::pair<ParticleId, std::uint32_t>>& slotOfId) {
+std::vector<PairHistory> wallHistoryInSlots(const std::vector<IdHistory>& records, const SlotOfId& slotOf) {
     std::vector<PairHistory> out;
-    for (const IdHistory& r : records) {
-        auto it =
-            std::lower_bound(slotOfId.begin(), slotOfId.end(), std::pair<ParticleId, std::uint32_t>{r.a, 0});
-        if (it == slotOfId.end() || it->first != r.a) continue;
-        out.push_back({pairKey(it->second, r.b), r.xi, r.zeta, r.areaOld, r.features});
-    }
+    out.reserve(records.size());
+    for (const IdHistory& r : records)
+        if (const std::uint32_t slot = slotOf(r.a); slot != kRemovedSlot)
+            out.push_back({pairKey(slot, r.b), r.xi, r.zeta, r.areaOld, r.features});
     std::sort(out.begin(), out.end());
     return out;
-}
-
-std::vector<std::pair<ParticleId, std::uint32_t>> slotsById(const model::ParticleStore& s) {
-    std::vector<std::pair<ParticleId, std::uint32_t>> v(s.size());
-    for (std::size_t k = 0; k < s.size(); ++k) v[k] = {s.id[k], static_cast<std::uint32_t>(k)};
-    std::sort(v.begin(), v.end());
-    return v;
 }
 
 IdHistory wallHistoryById(const model::ParticleStore& s, const PairHistory& h) {
@@ -255,6 +255,11 @@ DomainWorld::DomainWorld(Communicator& comm, World whole, DomainConfig config, c
     for (const PairHistory& h : NeighborList::historyOf(m_world.neighbors().wallPairs))
         if (kept[keyFirst(h.key)]) in.walls.push_back(wallHistoryById(s, h));
     assemble(std::move(in), false);
+    measureDomains();
+    // A piston's controller reads the total force on its wall at every step; other walls' forces
+    // are summed for outputs only.
+    for (const auto& w : m_world.walls().walls)
+        m_sumWallsEveryStep = m_sumWallsEveryStep || w.driver.kind == model::WallDriver::Kind::Piston;
 }
 
 std::vector<Real> DomainWorld::workWeights() const {
@@ -269,13 +274,22 @@ std::vector<Real> DomainWorld::workWeights() const {
     return w;
 }
 
-double DomainWorld::measureImbalance() {
+void DomainWorld::measureDomains() {
     const std::vector<Real> w = workWeights();
-    const double mine = std::accumulate(w.begin(), w.end(), 0.0);
-    const std::vector<double> all = m_comm.allGather(std::span<const double>(&mine, 1));
-    const double most = *std::max_element(all.begin(), all.end());
-    const double mean = std::accumulate(all.begin(), all.end(), 0.0) / static_cast<double>(all.size());
-    return mean > 0 ? most / mean : 1.0;
+    const double mine[3] = {std::accumulate(w.begin(), w.end(), 0.0), static_cast<double>(m_stats.owned),
+                            static_cast<double>(m_stats.ghosts)};
+    const std::vector<double> all = m_comm.allGather(std::span<const double>(mine, 3));
+    double most = 0, total = 0, owned = 0, ghosts = 0;
+    for (std::size_t r = 0; r < all.size() / 3; ++r) {
+        most = std::max(most, all[3 * r]);
+        total += all[3 * r];
+        owned += all[3 * r + 1];
+        ghosts += all[3 * r + 2];
+    }
+    const double mean = total / static_cast<double>(m_comm.size());
+    m_stats.imbalance = mean > 0 ? most / mean : 1.0;
+    m_particles = static_cast<std::size_t>(owned);
+    m_stats.haloShare = owned > 0 ? ghosts / owned : 0.0;
 }
 
 void DomainWorld::assemble(Incoming in, bool countAsBuild) {
@@ -323,7 +337,7 @@ void DomainWorld::assemble(Incoming in, bool countAsBuild) {
     m_owned = in.owned.size();
     m_ghostBegin[0] = static_cast<std::uint32_t>(m_owned);
     for (int r = 0; r < ranks; ++r) m_ghostBegin[r + 1] += m_ghostBegin[r];
-    const auto slotOfId = slotsById(store);
+    const SlotOfId slotOfId(store);
     std::vector<PairHistory> pairs = pairHistoryInSlots(std::move(in.pairs), slotOfId);
     std::vector<PairHistory> walls = wallHistoryInSlots(in.walls, slotOfId);
     // Which ranks keep each owned particle as a ghost (the same rule the sender applied).
@@ -349,9 +363,9 @@ void DomainWorld::exchangeWithFlow(const std::vector<std::uint32_t>& leaving,
     const double started = wallSeconds();
     const int ranks = m_comm.size();
     const model::ParticleStore& s = m_world.store();
+    // The work measured after the last exchange decides (it changes slowly between exchanges).
     if (mayBalance && m_config.balance && ranks > 1) {
-        const double imbalance = measureImbalance();
-        if (imbalance > m_config.balanceTrigger) {
+        if (m_stats.imbalance > m_config.balanceTrigger) {
             const std::vector<Real> w = workWeights();
             const std::vector<Real>& coords = m_partition.axis == 0 ? s.x : s.y;
             m_partition =
@@ -472,12 +486,8 @@ void DomainWorld::exchangeWithFlow(const std::vector<std::uint32_t>& leaving,
     assemble(std::move(in), true);
     ++m_stats.exchanges;
     // The work after the exchange, and the halo's share of all particles.
-    m_stats.imbalance = ranks > 1 ? measureImbalance() : 1.0;
+    measureDomains();
     m_stats.imbalanceSum += m_stats.imbalance;
-    std::uint64_t counts[2] = {m_stats.owned, m_stats.ghosts};
-    m_comm.allSum(std::span<std::uint64_t>(counts, 2));
-    m_particles = counts[0];
-    m_stats.haloShare = counts[0] > 0 ? static_cast<double>(counts[1]) / static_cast<double>(counts[0]) : 0.0;
     m_stats.exchangeSeconds += wallSeconds() - started;
 }
 
@@ -487,10 +497,12 @@ void DomainWorld::updateHalo() {
     const double started = wallSeconds();
     const std::size_t k = m_integratorColumns, per = 6 + k;
     model::ParticleStore& s = m_world.storeForHalo();
-    std::vector<ByteBuffer> out(static_cast<std::size_t>(ranks));
+    // Point to point, to the neighbouring slabs only: rank r keeps ghosts of this rank exactly
+    // when this rank has slots to send to it (the same rule on both sides).
     std::vector<Real> values;
     for (int r = 0; r < ranks; ++r) {
         const auto& slots = m_sendSlots[static_cast<std::size_t>(r)];
+        if (slots.empty()) continue;
         values.resize(slots.size() * per);
         Real* v = values.data();
         for (const std::uint32_t i : slots) {
@@ -503,31 +515,26 @@ void DomainWorld::updateHalo() {
             m_world.integratorRow(i, v + 6);
             v += per;
         }
-        out[static_cast<std::size_t>(r)] = packPod(std::span<const Real>(values));
+        m_comm.send(r, kHaloTag, packPod(std::span<const Real>(values)));
     }
-    const std::vector<ByteBuffer> in = m_comm.allToAll(std::move(out));
+    std::vector<Real> in;
     for (int r = 0; r < ranks; ++r) {
         const std::uint32_t begin = m_ghostBegin[static_cast<std::size_t>(r)];
         const std::uint32_t end = m_ghostBegin[static_cast<std::size_t>(r) + 1];
-        const ByteBuffer& bytes = in[static_cast<std::size_t>(r)];
-        if (bytes.size() != (end - begin) * per * sizeof(Real))
+        if (begin == end) continue;
+        in.clear();
+        unpackPod(m_comm.receive(r, kHaloTag), in);
+        if (in.size() != (end - begin) * per)
             throw std::logic_error("halo update: a rank sent another number of ghosts than it owns here");
-        for (std::uint32_t g = begin; g < end; ++g) {
-            Real v[6];
-            std::memcpy(v, bytes.data() + (g - begin) * per * sizeof(Real), sizeof v);
+        const Real* v = in.data();
+        for (std::uint32_t g = begin; g < end; ++g, v += per) {
             s.x[g] = v[0];
             s.y[g] = v[1];
             s.vx[g] = v[2];
             s.vy[g] = v[3];
             s.angle[g] = v[4];
             s.omega[g] = v[5];
-            if (k > 0) {
-                std::vector<Real>& r6 = values;
-                r6.resize(k);
-                std::memcpy(r6.data(), bytes.data() + ((g - begin) * per + 6) * sizeof(Real),
-                            k * sizeof(Real));
-                m_world.setIntegratorRow(g, r6.data());
-            }
+            if (k > 0) m_world.setIntegratorRow(g, v + 6);
         }
     }
     m_stats.haloSeconds += wallSeconds() - started;
@@ -537,18 +544,24 @@ std::uint32_t DomainWorld::step(bool stop) {
     std::uint32_t status = m_world.beginStep();
     updateHalo();
     double started = wallSeconds();
-    // One reduction: whether any rank must rebuild, and every rank's flags of the first part.
-    double flags[5] = {m_world.neighborsStale() ? 1.0 : 0.0, (status & kStepNonFinite) ? 1.0 : 0.0,
-                       (status & kStepTunnelling) ? 1.0 : 0.0, (status & kStepFieldFailed) ? 1.0 : 0.0,
-                       stop ? 1.0 : 0.0};
+    // The one reduction of a step: whether any rank must rebuild, every rank's flags of this
+    // step's first part and of the last step's forces (a deep overlap), and a stop request.
+    double flags[6] = {m_world.neighborsStale() ? 1.0 : 0.0,
+                       (status & kStepNonFinite) ? 1.0 : 0.0,
+                       (status & kStepTunnelling) ? 1.0 : 0.0,
+                       (status & kStepFieldFailed) ? 1.0 : 0.0,
+                       stop ? 1.0 : 0.0,
+                       m_deepOverlap ? 1.0 : 0.0};
     m_comm.allMax(flags);
-    m_stopRequested = flags[4] > 0;
     m_stats.reduceSeconds += wallSeconds() - started;
+    m_stopRequested = flags[4] > 0;
+    m_deepOverlap = false;
     status = (flags[1] > 0 ? kStepNonFinite : 0u) | (flags[2] > 0 ? kStepTunnelling : 0u) |
-             (flags[3] > 0 ? kStepFieldFailed : 0u);
-    if (status & kStepFieldFailed) return status;
+             (flags[3] > 0 ? kStepFieldFailed : 0u) | (flags[5] > 0 ? kStepDeepOverlap : 0u);
+    if (status & (kStepFieldFailed | kStepDeepOverlap)) return status;
     if (flags[0] > 0) exchange();
-    status |= m_world.finishStep();
+    // A deep overlap is reported with the next step's reduction (or by settle()).
+    m_deepOverlap = (m_world.finishStep() & kStepDeepOverlap) != 0;
     // Particles leave through this rank's outlets; sources and inlets place theirs against all.
     std::vector<std::uint32_t> leaving;
     std::vector<NewParticle> entering;
@@ -558,24 +571,28 @@ std::uint32_t DomainWorld::step(bool stop) {
         if (m_world.flow().insertionDue(m_world.time(), m_world.config().dt))
             entering = m_world.flowEntering(everyParticle());
     }
-    // Wall forces of all ranks (each counts its own particles' contacts), the overlap flag and
-    // the particles that left.
-    started = wallSeconds();
-    std::vector<Vec2>& wallForce = m_world.wallForceForSum();
-    std::vector<double> sums(2 * wallForce.size() + 2);
-    for (std::size_t w = 0; w < wallForce.size(); ++w) {
-        sums[2 * w] = wallForce[w].x;
-        sums[2 * w + 1] = wallForce[w].y;
+    const bool outlets = flow && !m_world.flow().config().outlets.empty();
+    if (m_sumWallsEveryStep || outlets) {  // a sum at the end of the step only when needed
+        started = wallSeconds();
+        std::vector<Vec2>& wallForce = m_world.wallForceForSum();
+        std::vector<double> sums(2 * wallForce.size() + 1);
+        for (std::size_t w = 0; w < wallForce.size(); ++w) {
+            sums[2 * w] = wallForce[w].x;
+            sums[2 * w + 1] = wallForce[w].y;
+        }
+        sums.back() = static_cast<double>(leaving.size());
+        m_comm.allSum(sums);
+        if (m_sumWallsEveryStep)
+            for (std::size_t w = 0; w < wallForce.size(); ++w) wallForce[w] = {sums[2 * w], sums[2 * w + 1]};
+        m_anyLeft = sums.back() > 0;
+        m_stats.reduceSeconds += wallSeconds() - started;
+    } else {
+        m_anyLeft = false;
     }
-    sums[sums.size() - 2] = (status & kStepDeepOverlap) ? 1.0 : 0.0;
-    sums.back() = static_cast<double>(leaving.size());
-    m_comm.allSum(sums);
-    for (std::size_t w = 0; w < wallForce.size(); ++w) wallForce[w] = {sums[2 * w], sums[2 * w + 1]};
-    if (sums[sums.size() - 2] > 0) status |= kStepDeepOverlap;
-    if (flow && (sums.back() > 0 || !entering.empty())) {
+    if (m_anyLeft || !entering.empty()) {
         const ParticleId firstId = m_world.admitParticles(entering);
         exchangeWithFlow(leaving, entering, firstId);
-        if (sums.back() > 0) {  // the smallest radius of what stays (tunnelling guard)
+        if (m_anyLeft) {  // the smallest radius of what stays (tunnelling guard)
             double smallest = 1e300;
             const auto& r = m_world.store().radius;
             for (std::size_t i = 0; i < m_owned; ++i) smallest = std::min(smallest, r[i]);
@@ -583,8 +600,14 @@ std::uint32_t DomainWorld::step(bool stop) {
             m_world.setMinRadius(smallest);
         }
     }
-    m_stats.reduceSeconds += wallSeconds() - started;
     return status;
+}
+
+std::uint32_t DomainWorld::settle() {
+    double deep = m_deepOverlap ? 1.0 : 0.0;
+    m_comm.allMax(std::span<double>(&deep, 1));
+    m_deepOverlap = false;
+    return deep > 0 ? kStepDeepOverlap : kStepOk;
 }
 
 model::ParticleStore DomainWorld::everyParticle() {
@@ -650,6 +673,12 @@ void DomainWorld::gather(World& copy) {
     removed.push_back(static_cast<double>(mineCounted.removed));
     removed.push_back(mineCounted.massOut);
     m_comm.allSum(removed);
+    std::vector<double> wallSums;  // this rank's contacts on each wall, of the last step
+    for (const Vec2& f : m_world.wallForceForSum()) {
+        wallSums.push_back(f.x);
+        wallSums.push_back(f.y);
+    }
+    if (!m_sumWallsEveryStep) m_comm.allSum(wallSums);
     const std::vector<ByteBuffer> all = m_comm.gather(w.take());
     if (!m_comm.root()) return;
     Incoming in;
@@ -673,7 +702,7 @@ void DomainWorld::gather(World& copy) {
         rows.insert(rows.end(), in.ownedRows.begin() + static_cast<std::ptrdiff_t>(i * k),
                     in.ownedRows.begin() + static_cast<std::ptrdiff_t>((i + 1) * k));
     }
-    const auto slotOfId = slotsById(store);
+    const SlotOfId slotOfId(store);
     const std::vector<PairHistory> pairs = pairHistoryInSlots(std::move(in.pairs), slotOfId);
     const std::vector<PairHistory> walls = wallHistoryInSlots(in.walls, slotOfId);
     copy.adoptClock(m_world);
@@ -685,6 +714,8 @@ void DomainWorld::gather(World& copy) {
     }
     counted.removed = static_cast<std::uint64_t>(removed[2 * outlets]);
     counted.massOut = removed[2 * outlets + 1];
+    std::vector<Vec2>& wallForce = copy.wallForceForSum();
+    for (std::size_t k = 0; k < wallForce.size(); ++k) wallForce[k] = {wallSums[2 * k], wallSums[2 * k + 1]};
     const std::size_t n = store.size();
     copy.replaceParticles(std::move(store), rows, pairs, walls, n, false, true);
     copy.evaluateForOutput();

@@ -55,6 +55,9 @@ public:
     /// Collective.
     std::uint32_t step(bool stop = false);
     bool stopRequested() const noexcept { return m_stopRequested; }
+    /// A deep overlap of the last step is reported with the next step's reduction; at the end
+    /// of an advance this reduction reports it (collective): kStepDeepOverlap or kStepOk.
+    std::uint32_t settle();
 
     const World& local() const noexcept { return m_world; }
     std::int64_t stepIndex() const noexcept { return m_world.stepIndex(); }
@@ -95,8 +98,9 @@ private:
     Real haloWidth() const noexcept { return 2 * m_world.maxRadius() + m_world.config().skin; }
     /// Contact candidates per owned slot, plus one (the work weight of balancing).
     std::vector<Real> workWeights() const;
-    /// The busiest rank's work / mean work (collective).
-    double measureImbalance();
+    /// After an exchange: the busiest rank's work / mean work, all particles and the halo share
+    /// (collective, one all-gather).
+    void measureDomains();
 
     Communicator& m_comm;
     World m_world;
@@ -111,6 +115,10 @@ private:
     std::vector<std::uint32_t> m_ghostBegin;
     DomainStats m_stats;
     bool m_stopRequested = false;
+    bool m_deepOverlap = false;        ///< this rank's last step reached a deep overlap
+    bool m_sumWallsEveryStep = false;  ///< a piston needs the total wall force at every step
+    bool m_anyLeft = false;
+    static constexpr int kHaloTag = 0x4841;
 };
 
 }  // namespace granulab::dem
