@@ -44,9 +44,9 @@ void springForces(model::ParticleStore& s, const BodyForces& body, std::uint32_t
                   std::uint32_t end) noexcept {
     if (!body.springs) return;
     for (const PullSpring& sp : *body.springs) {
-        const std::uint32_t i = sp.slot;
-        GL_ASSERT(i < s.size(), "spring slot in range");
+        const std::uint32_t i = sp.slot;  // kRemovedSlot: another rank's particle (dem/parallel/)
         if (i < begin || i >= end) continue;
+        GL_ASSERT(i < s.size(), "spring slot in range");
         const Real c = std::cos(s.angle[i]), sn = std::sin(s.angle[i]);
         const Vec2 arm{c * sp.attach.x - sn * sp.attach.y, sn * sp.attach.x + c * sp.attach.y};
         const Vec2 f = (sp.freeEnd(body.time) - (Vec2{s.x[i], s.y[i]} + arm)) * sp.stiffness;

@@ -271,7 +271,7 @@ bool World::neighborsStale() const noexcept {
     return m_list.needsRebuild(m_store, m_config.skin, wallTravel, m_forceWork.threads);
 }
 
-std::uint32_t World::finishStep() {
+std::uint32_t World::finishStep(IterationLink* link) {
     std::uint32_t status = kStepOk;
     const Real dt = m_config.dt;
     // 4+6+7: force evaluation(s) at the trial state and correction, until the integrator accepts.
@@ -293,6 +293,7 @@ std::uint32_t World::finishStep() {
             ScopedStage t(m_timers, Stage::Correct);
             accepted = m_integrator->correct(m_store, dt, iteration);
         }
+        if (link && trial) accepted = link->agree(accepted);
         if (accepted) break;
     }
     if (trial) m_list.commitHistory();
@@ -318,6 +319,11 @@ void World::replaceParticles(model::ParticleStore store, const std::vector<Real>
             for (std::size_t c = 0; c < k; ++c) state->columns[c][i] = integratorRows[i * k + c];
     }
     m_broad->slotsRenumbered();
+    for (auto& sp : m_config.springs) {  // a spring pulls on the rank that owns its particle
+        sp.slot = kRemovedSlot;
+        for (std::uint32_t k = 0; k < std::min(ownedEnd, n); ++k)
+            if (m_store.id[k] == sp.id) sp.slot = k;
+    }
     m_list.ownedEnd = static_cast<std::uint32_t>(std::min<std::size_t>(ownedEnd, 0xFFFFFFFFu));
     m_scaleAtRebuild = m_scale;
     m_lawRebuildDue = false;

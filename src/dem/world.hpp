@@ -111,8 +111,16 @@ public:
     bool neighborsStale() const noexcept;
     /// Stages 3+5: broad phase and history transfer (with a spatial re-sort every k-th time).
     void rebuildNeighbors();
+    /// Between two force evaluations of an iterating integrator: `agree` returns whether every
+    /// part of a decomposed world accepts the step (and, if not, brings the ghosts' trial state
+    /// up to date). One call per iteration, never per particle.
+    class IterationLink {
+    public:
+        virtual ~IterationLink() = default;
+        virtual bool agree(bool acceptedHere) = 0;
+    };
     /// Stages 4, 6, 7 and the particles in and out; StepStatus flags.
-    std::uint32_t finishStep();
+    std::uint32_t finishStep(IterationLink* link = nullptr);
 
     // ---- Domain decomposition (dem/parallel/domain_world.hpp) -------------------------------
     /// Replaces every particle by `store`, whose slots from `ownedEnd` on are ghosts (their

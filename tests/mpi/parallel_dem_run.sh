@@ -23,7 +23,12 @@
 #     (examples/machines/hopper_inlet.toml, 200 emitted, ~150 removed by t = 0.5 s) on 2 and 3
 #     ranks, and a pile fed by a REL drop source (pile_dropsource.toml) to t = 0.12 s on 2 ranks:
 #     the same particles (ids) within the bounds above, the same flow counters in summary.json;
-#   - what runs on one rank only (pull springs) is refused with exit status 2 and "mpirun".
+#   - the iterating predictor-corrector (every rank iterates until all accept, the ghosts follow
+#     each iteration): the bed settled with it serially to t = 2 s and continued 0.3 s on 2 ranks,
+#     within the bounds above; a pull spring on a grain of the bed (the rank that owns the grain
+#     pulls it), 0.3 s from the start on 2 ranks against one (the bed still falls and collides:
+#     velocities within 1e-7, measured 6e-9; positions 1e-11 m);
+#   - what runs on one rank only (mutual attraction) is refused with exit status 2 and "mpirun".
 # Usage: parallel_dem_run.sh GRANULAB EXAMPLES_DIR WORKDIR MPIEXEC [MPI flags ...]
 set -eu
 granulab=$1 examples=$2 work=$3 mpiexec=$4
@@ -76,13 +81,25 @@ done
 "$granulab" run "$pile" $common --set run.end_time=0.12 --out "$work/pile1"
 on_ranks 2 "$granulab" run "$pile" $common --set run.end_time=0.12 --out "$work/pile2"
 
-# Pull springs run on one rank only: refused with exit status 2, naming mpirun.
-cp "$examples/disks_in_box.toml" "$work/spring.toml"
-printf '\n[[spring]]\nparticle = 0\npull_start = [0.1, 0.3]\n' >>"$work/spring.toml"
+# The iterating predictor-corrector, and a pull spring.
+pc="$small --set dem.integrator=\"pc\" --set dem.pc_iterations=3"
+"$granulab" run "$bed" $pc --set run.end_time=2.0 --out "$work/pcsettled"
+cp -r "$work/pcsettled" "$work/pc1"
+cp -r "$work/pcsettled" "$work/pc2"
+"$granulab" run "$bed" $pc --set run.end_time=2.3 --resume "$work/pc1"
+on_ranks 2 "$granulab" run "$bed" $pc --set run.end_time=2.3 --resume "$work/pc2"
+cp "$bed" "$work/spring.toml"
+printf '\n[[spring]]\nparticle = 100\nk = 200.0\npull_start = [20.0, 4.0]\nspeed = 5.0\n' >>"$work/spring.toml"
+"$granulab" run "$work/spring.toml" $small --set run.end_time=0.3 --out "$work/spring1"
+on_ranks 2 "$granulab" run "$work/spring.toml" $small --set run.end_time=0.3 --out "$work/spring2"
+
+# Mutual attraction runs on one rank only: refused with exit status 2, naming mpirun.
+cp "$examples/disks_in_box.toml" "$work/attraction.toml"
+printf '\n[attraction]\nconstant = 1.0e-6\ncutoff = 0.05\n' >>"$work/attraction.toml"
 status=0
-on_ranks 2 "$granulab" run "$work/spring.toml" -q --out "$work/refused" 2>"$work/refused.log" || status=$?
+on_ranks 2 "$granulab" run "$work/attraction.toml" -q --out "$work/refused" 2>"$work/refused.log" || status=$?
 if [ "$status" -ne 2 ] || ! grep -q "mpirun" "$work/refused.log"; then
-    echo "a pull spring on 2 ranks: exit status $status, expected 2 with a message naming mpirun"
+    echo "[attraction] on 2 ranks: exit status $status, expected 2 with a message naming mpirun"
     cat "$work/refused.log"
     exit 1
 fi
@@ -147,6 +164,8 @@ close("heap", "heap3", dv=1e-5)
 for run in ("hopper2", "hopper3"):
     close("hopper1", run)
 close("pile1", "pile2")
+close("pc1", "pc2")
+close("spring1", "spring2", dv=1e-7)  # the bed still falls and collides: measured 6e-9
 import json
 for ref, run in (("hopper1", "hopper2"), ("hopper1", "hopper3"), ("pile1", "pile2")):
     a = json.load(open(f"{work}/{ref}/summary.json"))["flow"]

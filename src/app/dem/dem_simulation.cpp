@@ -521,9 +521,6 @@ private:
         std::vector<std::string> missing;
         if (scene.fluid.present) missing.push_back("[fluid]");
         if (scene.attraction.present) missing.push_back("[attraction]");
-        if (!scene.springs.empty()) missing.push_back("pull springs");
-        if (dem::integratorOf(scene) == "pc" && scene.dem.pcIterations > 0)
-            missing.push_back("the iterating predictor-corrector (dem.pc_iterations > 0)");
         if (missing.empty()) return;
         std::string list;
         for (const auto& f : missing) list += (list.empty() ? "" : ", ") + f;

@@ -561,7 +561,7 @@ std::uint32_t DomainWorld::step(bool stop) {
     if (status & (kStepFieldFailed | kStepDeepOverlap)) return status;
     if (flags[0] > 0) exchange();
     // A deep overlap is reported with the next step's reduction (or by settle()).
-    m_deepOverlap = (m_world.finishStep() & kStepDeepOverlap) != 0;
+    m_deepOverlap = (m_world.finishStep(this) & kStepDeepOverlap) != 0;
     // Particles leave through this rank's outlets; sources and inlets place theirs against all.
     std::vector<std::uint32_t> leaving;
     std::vector<NewParticle> entering;
@@ -601,6 +601,13 @@ std::uint32_t DomainWorld::step(bool stop) {
         }
     }
     return status;
+}
+
+bool DomainWorld::agree(bool acceptedHere) {
+    double notAccepted = acceptedHere ? 0.0 : 1.0;
+    m_comm.allMax(std::span<double>(&notAccepted, 1));
+    if (notAccepted > 0) updateHalo();
+    return notAccepted == 0;
 }
 
 std::uint32_t DomainWorld::settle() {

@@ -41,7 +41,7 @@ struct DomainStats {
     double reduceSeconds = 0;      ///< [s] this rank's per-step reductions (waiting for the others)
 };
 
-class DomainWorld {
+class DomainWorld : private World::IterationLink {
 public:
     /// `whole`: the scene's world with every particle, initialised or loaded (the same on every
     /// rank); it becomes this rank's part. Collective.
@@ -94,6 +94,8 @@ private:
     void assemble(Incoming in, bool countAsBuild);
     /// Owners send their ghosts' state; ghosts take it.
     void updateHalo();
+    /// An iterating integrator goes on until every rank accepts; the ghosts follow each iteration.
+    bool agree(bool acceptedHere) override;
     /// [m] the ghost layer: every partner a contact candidate can have.
     Real haloWidth() const noexcept { return 2 * m_world.maxRadius() + m_world.config().skin; }
     /// Contact candidates per owned slot, plus one (the work weight of balancing).
