@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "../support.hpp"
+#include "../support/dem_scenes.hpp"
 #include "core/communicator.hpp"
 #include "dem/parallel/domain_world.hpp"
 #include "dem/parallel/slab_partition.hpp"
@@ -36,7 +37,9 @@ public:
     void allMax(std::span<double>) override {}
     void allSum(std::span<double>) override {}
     void allSum(std::span<std::uint64_t>) override {}
-    std::vector<double> allGather(std::span<const double> mine) override { return {mine.begin(), mine.end()}; }
+    std::vector<double> allGather(std::span<const double> mine) override {
+        return {mine.begin(), mine.end()};
+    }
     std::vector<ByteBuffer> gather(ByteBuffer mine) override { return {std::move(mine)}; }
     ByteBuffer broadcast(ByteBuffer data) override { return data; }
     std::vector<ByteBuffer> allToAll(std::vector<ByteBuffer> outgoing) override { return outgoing; }
@@ -48,45 +51,8 @@ private:
     int m_ranks;
 };
 
-/// A dense bed of ~1500 disks with friction and rolling resistance (tests/dem/test_threads.cpp).
-const std::string kBed = R"(
-[run]
-seed = 7
-end_time = 1.0
-[dem]
-dt = 1.0e-4
-gravity = [0.0, -500.0]
-skin = 0.1
-[[dem.damping]]
-gamma = 0.5
-from = 0.0
-to = 0.02
-[[material]]
-name = "g"
-density = 1.0
-[[contact]]
-materials = ["*", "*"]
-normal = "hooke"
-kn = 2.0e5
-damping = "lammps"
-gamma_n = 50.0
-tangential = "cundall_strack"
-mu = 0.5
-rolling = "spring_dashpot"
-k_r = 50.0
-D_r = 0.3
-[[block]]
-lattice = "hexagonal"
-spacing = 1.1
-origin = [0.6, 0.6]
-region = [0.1, 0.1, 40.0, 40.0]
-radius = { distribution = "uniform", min = 0.45, max = 0.55 }
-material = "g"
-temperature = 50.0
-[[wall]]
-points = [[0.0, 60.0], [0.0, 0.0], [40.6, 0.0], [40.6, 60.0]]
-material = "g"
-)";
+/// The dense rolling bed of tests/support/dem_scenes.hpp.
+const std::string& kBed = test::kRollingDiskBed;
 
 /// Positions and velocities by id.
 std::map<ParticleId, std::array<Real, 5>> stateById(const model::ParticleStore& s, std::size_t end) {
@@ -171,7 +137,8 @@ TEST(DomainWorld, OneRankFollowsTheWorldThroughMigrations) {
     for (const auto& [id, va] : a) {
         const auto& vb = b.at(id);
         worstX = std::max({worstX, std::abs(va[0] - vb[0]), std::abs(va[1] - vb[1])});
-        worstV = std::max({worstV, std::abs(va[2] - vb[2]), std::abs(va[3] - vb[3]), std::abs(va[4] - vb[4])});
+        worstV =
+            std::max({worstV, std::abs(va[2] - vb[2]), std::abs(va[3] - vb[3]), std::abs(va[4] - vb[4])});
     }
     EXPECT_LT(worstX, 1e-9) << "positions [m], radius 0.5 m";
     EXPECT_LT(worstV, 1e-6) << "velocities [m/s], [rad/s]";
