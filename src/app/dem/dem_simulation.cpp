@@ -526,9 +526,9 @@ private:
         for (const auto& f : missing) list += (list.empty() ? "" : ", ") + f;
         Diagnostics d;
         d.error(scene.run.loc, "mpirun",
-                fmt::format("this scene uses {}, which run on one MPI rank only in this version; "
+                fmt::format("this scene uses {}, which {} on one MPI rank only in this version; "
                             "run it without mpirun (threads: run.threads)",
-                            list));
+                            list, missing.size() == 1 ? "runs" : "run"));
         d.throwIfAny();
     }
 
