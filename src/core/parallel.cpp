@@ -24,9 +24,11 @@ int defaultThreads() noexcept {
     const char* local = std::getenv("OMPI_COMM_WORLD_LOCAL_SIZE");
     if (!local) local = std::getenv("MPI_LOCALNRANKS");
     const long ranks = local ? std::strtol(local, nullptr, 10) : 1;
-    const long online = sysconf(_SC_NPROCESSORS_ONLN);
-    if (ranks <= 1 || cores < online) return cores;  // alone, or bound to its own cores
-    return static_cast<int>(std::max<long>(1, cores / ranks));
+    if (ranks <= 1) return cores;
+    // The machine's cores shared among its ranks, and no more than this rank's mask allows
+    // (mpirun binds to a core or a socket, or not at all).
+    const long online = std::max<long>(1, sysconf(_SC_NPROCESSORS_ONLN));
+    return static_cast<int>(std::clamp<long>(online / ranks, 1, cores));
 }
 
 }  // namespace granulab

@@ -20,10 +20,10 @@ inline constexpr bool kHaveThreads = false;
 
 /// Cores this process may run on (its CPU affinity mask; 1 in a serial build).
 int availableCores() noexcept;
-/// The default thread count of a process (run.threads = 0): availableCores(), shared among the
-/// MPI ranks of this machine when mpirun left them unbound (each may use every core; Open MPI's
-/// OMPI_COMM_WORLD_LOCAL_SIZE or MPICH's MPI_LOCALNRANKS says how many there are), so that P
-/// ranks of T threads do not oversubscribe the cores.
+/// The default thread count of a process (run.threads = 0): availableCores(), or under mpirun
+/// with several ranks on this machine (Open MPI's OMPI_COMM_WORLD_LOCAL_SIZE, MPICH's
+/// MPI_LOCALNRANKS) the machine's cores divided among them, at most availableCores(): P ranks of
+/// T threads then do not oversubscribe the cores, however mpirun bound them.
 int defaultThreads() noexcept;
 
 /// Calls fn(k) once for every k in [0, count), on up to `threads` threads, the items handed out

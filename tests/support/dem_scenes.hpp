@@ -47,5 +47,4 @@ points = [[0.0, 60.0], [0.0, 0.0], [40.6, 0.0], [40.6, 60.0]]
 material = "g"
 )";
 
-
 }  // namespace granulab::test
