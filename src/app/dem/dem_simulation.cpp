@@ -157,11 +157,11 @@ public:
             return fmt::format(
                 "the run made no progress at t = {:.6g} s (step {}): the output stops no longer advance the "
                 "clock (an internal error; please report it with the scene).",
-                m_world.time(), m_world.stepIndex());
+                time(), currentStep());
         if (status & kSimInputFailed)
             return fmt::format(
-                "a flow field could not be loaded at t = {:.6g} s (step {}): {}. {}", m_world.time(),
-                m_world.stepIndex(), m_inputError,
+                "a flow field could not be loaded at t = {:.6g} s (step {}): {}. {}", time(), currentStep(),
+                m_inputError,
                 m_scene.fluid.check == "first"
                     ? "With fluid.check = \"first\" the later files are read only when they are due; "
                       "fix the file and resume from the last checkpoint."
@@ -172,9 +172,9 @@ public:
             why.push_back("a particle moved more than half its radius in one step (tunnelling)");
         if (status & kSimOverlap)
             why.push_back(fmt::format("a contact overlap reached {:.3g} times the smaller radius",
-                                      m_world.forceStats().maxRelativeOverlap));
-        std::string s = fmt::format("the run became unstable at t = {:.6g} s (step {}): ", m_world.time(),
-                                    m_world.stepIndex());
+                                      stepWorld().forceStats().maxRelativeOverlap));
+        std::string s =
+            fmt::format("the run became unstable at t = {:.6g} s (step {}): ", time(), currentStep());
         for (std::size_t k = 0; k < why.size(); ++k) s += (k ? "; " : "") + why[k];
         s += ". Likely causes: ";
         if ((status & kSimOverlap) && m_guardSkips > 0)
@@ -515,6 +515,8 @@ private:
     std::int64_t currentStep() const noexcept {
         return m_domain ? m_domain->stepIndex() : m_world.stepIndex();
     }
+    /// The World that steps: the engine on one rank, this rank's part on several.
+    const dem::World& stepWorld() const noexcept { return m_domain ? m_domain->local() : m_world; }
 
     /// The engine features that run on one rank only for now: a clear refusal (exit status 2).
     static void checkDecomposable(const model::SceneDef& scene) {
@@ -552,15 +554,27 @@ private:
     }
 
     std::uint32_t advanceOnRanks(const Stop& stop) {
+        double skips = 0;  // overlap-guard skips of every rank (a pair on two ranks counts twice)
+        const auto countSkips = [&] {
+            worldCommunicator().allSum(std::span<double>(&skips, 1));
+            m_guardSkips += static_cast<std::uint64_t>(skips);
+        };
         while (static_cast<std::uint64_t>(m_domain->stepIndex()) < stop.count) {
             const std::uint32_t status = m_domain->step(interruptRequested());
             m_viewFresh = false;
-            if (status != dem::kStepOk)
+            skips += static_cast<double>(m_domain->local().forceStats().guardSkips);
+            if (status != dem::kStepOk) {
+                countSkips();
                 return (status & dem::kStepNonFinite ? kSimNonFinite : 0u) |
                        (status & dem::kStepTunnelling ? kSimUnstable : 0u) |
                        (status & dem::kStepDeepOverlap ? kSimOverlap : 0u);
-            if (m_domain->stopRequested()) return kSimInterrupted;  // every rank after the same step
+            }
+            if (m_domain->stopRequested()) {  // every rank after the same step
+                countSkips();
+                return kSimInterrupted;
+            }
         }
+        countSkips();
         return m_domain->settle() & dem::kStepDeepOverlap ? kSimOverlap : kSimOk;
     }
 
