@@ -399,6 +399,8 @@ void World::evaluateForOutput() {
         m_list.wallPairs.xiTrial.size() != m_list.wallPairs.size())
         return;  // the lists were built without trial columns: nothing may be written
     evaluateForces(body, DriftVelocities{}, true);  // trial columns: the accepted history stays
+    if (m_field) m_field->update(time());           // the fluid statistics of the whole set
+    evaluateFieldForces(body);
     m_store.fx = fx;
     m_store.fy = fy;
     m_store.torque = torque;

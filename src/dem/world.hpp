@@ -162,8 +162,8 @@ public:
     /// The gathered copy of a decomposed run: takes the step, walls, size scale, laws, counters
     /// and integrator flags of `local` (one rank's world of the same scene).
     void adoptClock(const World& local);
-    /// Evaluates the forces of the current state for outputs only: statistics, wall forces and,
-    /// when recordContacts is on, the contact log; the particles' forces and the accepted
+    /// Evaluates the forces of the current state for outputs only: statistics (fluid ones too),
+    /// wall forces and, when recordContacts is on, the contact log; the particles' forces and the accepted
     /// history are kept (the springs are not advanced: the drift is zero).
     void evaluateForOutput();
 

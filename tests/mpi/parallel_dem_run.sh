@@ -28,7 +28,11 @@
 #     within the bounds above; a pull spring on a grain of the bed (the rank that owns the grain
 #     pulls it), 0.3 s from the start on 2 ranks against one (the bed still falls and collides:
 #     velocities within 1e-7, measured 6e-9; positions 1e-11 m);
-#   - what runs on one rank only (mutual attraction) is refused with exit status 2 and "mpirun".
+#   - a fluid (uniform upward flow, Stokes drag, buoyancy) and mutual attraction within a cutoff
+#     of 4 m, three times the contacts' halo: the bed 0.3 s from the start on 2 ranks against one
+#     (measured 0 and 3e-13 m; a halo that ignores the cutoff moves grains 0.13 m);
+#   - what runs on one rank only (the di_felice drag, all-pairs attraction) is refused with exit
+#     status 2 and "mpirun".
 # Usage: parallel_dem_run.sh GRANULAB EXAMPLES_DIR WORKDIR MPIEXEC [MPI flags ...]
 set -eu
 granulab=$1 examples=$2 work=$3 mpiexec=$4
@@ -93,13 +97,24 @@ printf '\n[[spring]]\nparticle = 100\nk = 200.0\npull_start = [20.0, 4.0]\nspeed
 "$granulab" run "$work/spring.toml" $small --set run.end_time=0.3 --out "$work/spring1"
 on_ranks 2 "$granulab" run "$work/spring.toml" $small --set run.end_time=0.3 --out "$work/spring2"
 
-# Mutual attraction runs on one rank only: refused with exit status 2, naming mpirun.
-cp "$examples/disks_in_box.toml" "$work/attraction.toml"
-printf '\n[attraction]\nconstant = 1.0e-6\ncutoff = 0.05\n' >>"$work/attraction.toml"
+# A fluid and mutual attraction within a cutoff.
+cp "$bed" "$work/fluid.toml"
+printf '\n[fluid]\ndensity = 1.0\nviscosity = 0.05\ndrag = "stokes"\nvelocity = [1.0, 5.0]\n' >>"$work/fluid.toml"
+sphere="--set dem.mass_model=\"sphere\""
+"$granulab" run "$work/fluid.toml" $small $sphere --set run.end_time=0.3 --out "$work/fluid1"
+on_ranks 2 "$granulab" run "$work/fluid.toml" $small $sphere --set run.end_time=0.3 --out "$work/fluid2"
+cp "$bed" "$work/attraction.toml"
+printf '\n[attraction]\nconstant = 5.0\ncutoff = 4.0\n' >>"$work/attraction.toml"
+"$granulab" run "$work/attraction.toml" $small --set run.end_time=0.3 --out "$work/attraction1"
+on_ranks 2 "$granulab" run "$work/attraction.toml" $small --set run.end_time=0.3 --out "$work/attraction2"
+
+# All-pairs attraction runs on one rank only: refused with exit status 2, naming mpirun.
+cp "$examples/disks_in_box.toml" "$work/allpairs.toml"
+printf '\n[attraction]\nconstant = 1.0e-6\n' >>"$work/allpairs.toml"
 status=0
-on_ranks 2 "$granulab" run "$work/attraction.toml" -q --out "$work/refused" 2>"$work/refused.log" || status=$?
+on_ranks 2 "$granulab" run "$work/allpairs.toml" -q --out "$work/refused" 2>"$work/refused.log" || status=$?
 if [ "$status" -ne 2 ] || ! grep -q "mpirun" "$work/refused.log"; then
-    echo "[attraction] on 2 ranks: exit status $status, expected 2 with a message naming mpirun"
+    echo "all-pairs [attraction] on 2 ranks: exit status $status, expected 2 with a message naming mpirun"
     cat "$work/refused.log"
     exit 1
 fi
@@ -166,6 +181,8 @@ for run in ("hopper2", "hopper3"):
 close("pile1", "pile2")
 close("pc1", "pc2")
 close("spring1", "spring2", dv=1e-7)  # the bed still falls and collides: measured 6e-9
+close("fluid1", "fluid2")
+close("attraction1", "attraction2")
 import json
 for ref, run in (("hopper1", "hopper2"), ("hopper1", "hopper3"), ("pile1", "pile2")):
     a = json.load(open(f"{work}/{ref}/summary.json"))["flow"]

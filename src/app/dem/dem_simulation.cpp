@@ -21,6 +21,7 @@
 #include "dem/parallel/domain_world.hpp"
 #include "dem/setup.hpp"
 #include "dem/step_clock.hpp"
+#include "fluid/drag_laws.hpp"
 #include "io/csv_writers.hpp"
 #include "io/validate_dem.hpp"
 #include "model/material_names.hpp"
@@ -49,7 +50,8 @@ public:
         if (worldCommunicator().size() >
             1) {  // domain decomposition: this rank's part comes from a whole world
             checkDecomposable(scene);
-            m_whole.emplace(dem::makeWorld(scene, prepared.initial));
+            m_whole.emplace(dem::makeWorld(
+                scene, prepared.initial, m_world.field() ? m_world.field()->source() : fluid::FieldSource{}));
         }
     }
 
@@ -95,8 +97,13 @@ public:
     }
 
     std::uint32_t start() override {
-        if (m_whole) {  // several ranks (no flow fields: checkDecomposable)
-            m_whole->initialize();
+        if (m_whole) {  // several ranks: every rank reads the flow fields itself
+            try {
+                m_whole->initialize();
+            } catch (const std::exception& e) {  // the flow field of t = 0 could not be loaded
+                m_inputError = e.what();
+                return kSimInputFailed;
+            }
             decompose();
             return kSimOk;
         }
@@ -521,8 +528,10 @@ private:
     /// The engine features that run on one rank only for now: a clear refusal (exit status 2).
     static void checkDecomposable(const model::SceneDef& scene) {
         std::vector<std::string> missing;
-        if (scene.fluid.present) missing.push_back("[fluid]");
-        if (scene.attraction.present) missing.push_back("[attraction]");
+        if (scene.fluid.present && fluid::needsVoidage(fluid::makeDragLaw(scene.fluid.drag, 0)))
+            missing.push_back("the di_felice drag (its voidage cells reach beyond the ghost layer)");
+        if (scene.attraction.present && !(scene.attraction.cutoff > 0))
+            missing.push_back("[attraction] between all pairs (attraction.cutoff = 0)");
         if (missing.empty()) return;
         std::string list;
         for (const auto& f : missing) list += (list.empty() ? "" : ", ") + f;
@@ -563,6 +572,12 @@ private:
             const std::uint32_t status = m_domain->step(interruptRequested());
             m_viewFresh = false;
             skips += static_cast<double>(m_domain->local().forceStats().guardSkips);
+            if (status & dem::kStepFieldFailed) {  // every rank reads the same files
+                m_inputError = m_domain->local().fieldError().empty() ? "on another rank"
+                                                                      : m_domain->local().fieldError();
+                countSkips();
+                return kSimInputFailed;
+            }
             if (status != dem::kStepOk) {
                 countSkips();
                 return (status & dem::kStepNonFinite ? kSimNonFinite : 0u) |

@@ -11,6 +11,7 @@
 // Results: the same for a given rank count, bit for bit; across rank counts they agree to
 // round-off (each rank adds a particle's contact forces in its own list order).
 #pragma once
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -96,8 +97,13 @@ private:
     void updateHalo();
     /// An iterating integrator goes on until every rank accepts; the ghosts follow each iteration.
     bool agree(bool acceptedHere) override;
-    /// [m] the ghost layer: every partner a contact candidate can have.
-    Real haloWidth() const noexcept { return 2 * m_world.maxRadius() + m_world.config().skin; }
+    /// [m] the ghost layer: every partner a contact candidate can have, and every particle within
+    /// the attraction cutoff (particles move at most skin/2 between exchanges).
+    Real haloWidth() const noexcept {
+        const auto& c = m_world.config();
+        const Real attraction = c.attraction ? c.attraction->cutoff + c.skin : 0;
+        return std::max(2 * m_world.maxRadius() + c.skin, attraction);
+    }
     /// Contact candidates per owned slot, plus one (the work weight of balancing).
     std::vector<Real> workWeights() const;
     /// After an exchange: the busiest rank's work / mean work, all particles and the halo share
