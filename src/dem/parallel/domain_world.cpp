@@ -185,6 +185,27 @@ struct DomainWorld::Incoming {
     std::vector<ParticleRecord> owned, ghosts;
     std::vector<Real> ownedRows, ghostRows;  ///< integrator state, m_integratorColumns per record
     std::vector<IdHistory> pairs, walls;
+
+    ByteBuffer message() const {
+        MessageWriter w;
+        w.put(owned);
+        w.put(ownedRows);
+        w.put(ghosts);
+        w.put(ghostRows);
+        w.put(pairs);
+        w.put(walls);
+        return w.take();
+    }
+    /// Appends what `bytes` (a message()) holds.
+    void append(const ByteBuffer& bytes) {
+        MessageReader rd(bytes);
+        rd.appendTo(owned);
+        rd.appendTo(ownedRows);
+        rd.appendTo(ghosts);
+        rd.appendTo(ghostRows);
+        rd.appendTo(pairs);
+        rd.appendTo(walls);
+    }
 };
 
 DomainWorld::DomainWorld(Communicator& comm, World whole, DomainConfig config, const SlabPartition* cuts)
@@ -460,29 +481,11 @@ void DomainWorld::exchangeWithFlow(const std::vector<std::uint32_t>& leaving,
             out[static_cast<std::size_t>(dests[destBegin[a]])].walls.push_back(wallHistoryById(s, h));
     }
     std::vector<ByteBuffer> messages(static_cast<std::size_t>(ranks));
-    for (int r = 0; r < ranks; ++r) {
-        MessageWriter w;
-        const Incoming& o = out[static_cast<std::size_t>(r)];
-        w.put(o.owned);
-        w.put(o.ownedRows);
-        w.put(o.ghosts);
-        w.put(o.ghostRows);
-        w.put(o.pairs);
-        w.put(o.walls);
-        messages[static_cast<std::size_t>(r)] = w.take();
-    }
+    for (int r = 0; r < ranks; ++r)
+        messages[static_cast<std::size_t>(r)] = out[static_cast<std::size_t>(r)].message();
     out.clear();
-    const std::vector<ByteBuffer> received = m_comm.allToAll(std::move(messages));
     Incoming in;
-    for (const ByteBuffer& bytes : received) {
-        MessageReader rd(bytes);
-        rd.appendTo(in.owned);
-        rd.appendTo(in.ownedRows);
-        rd.appendTo(in.ghosts);
-        rd.appendTo(in.ghostRows);
-        rd.appendTo(in.pairs);
-        rd.appendTo(in.walls);
-    }
+    for (const ByteBuffer& bytes : m_comm.allToAll(std::move(messages))) in.append(bytes);
     assemble(std::move(in), true);
     ++m_stats.exchanges;
     // The work after the exchange, and the halo's share of all particles.
@@ -668,11 +671,6 @@ void DomainWorld::gather(World& copy) {
     }
     for (const PairHistory& h : NeighborList::historyOf(m_world.neighbors().wallPairs))
         mine.walls.push_back(wallHistoryById(s, h));
-    MessageWriter w;
-    w.put(mine.owned);
-    w.put(mine.ownedRows);
-    w.put(mine.pairs);
-    w.put(mine.walls);
     // Removals are booked by the rank that removed: summed (the other counters agree everywhere).
     const FlowCounters& mineCounted = m_world.flow().counters();
     std::vector<double> removed(mineCounted.outletRemoved.begin(), mineCounted.outletRemoved.end());
@@ -686,16 +684,10 @@ void DomainWorld::gather(World& copy) {
         wallSums.push_back(f.y);
     }
     if (!m_sumWallsEveryStep) m_comm.allSum(wallSums);
-    const std::vector<ByteBuffer> all = m_comm.gather(w.take());
+    const std::vector<ByteBuffer> all = m_comm.gather(mine.message());
     if (!m_comm.root()) return;
     Incoming in;
-    for (const ByteBuffer& bytes : all) {
-        MessageReader rd(bytes);
-        rd.appendTo(in.owned);
-        rd.appendTo(in.ownedRows);
-        rd.appendTo(in.pairs);
-        rd.appendTo(in.walls);
-    }
+    for (const ByteBuffer& bytes : all) in.append(bytes);
     std::vector<std::uint32_t> order(in.owned.size());
     std::iota(order.begin(), order.end(), 0u);
     std::sort(order.begin(), order.end(),
