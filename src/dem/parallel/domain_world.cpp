@@ -38,23 +38,30 @@ ParticleRecord recordOf(const model::ParticleStore& s, std::size_t k, int owner)
             s.invInertia[k], s.id[k], s.material[k], s.shape[k],  owner};
 }
 
-void appendRecord(model::ParticleStore& s, const ParticleRecord& r) {
-    s.x.push_back(r.x);
-    s.y.push_back(r.y);
-    s.vx.push_back(r.vx);
-    s.vy.push_back(r.vy);
-    s.angle.push_back(r.angle);
-    s.omega.push_back(r.omega);
-    s.fx.push_back(r.fx);
-    s.fy.push_back(r.fy);
-    s.torque.push_back(r.torque);
-    s.radius.push_back(r.radius);
-    s.mass.push_back(r.mass);
-    s.invMass.push_back(r.invMass);
-    s.invInertia.push_back(r.invInertia);
-    s.material.push_back(r.material);
-    s.id.push_back(r.id);
-    s.shape.push_back(r.shape);
+/// A store of n particles (every column sized; setRecord fills them).
+model::ParticleStore storeOfSize(std::size_t n) {
+    model::ParticleStore s;
+    s.forEachColumn([&](auto& column) { column.resize(n); });
+    return s;
+}
+
+void setRecord(model::ParticleStore& s, std::size_t k, const ParticleRecord& r) {
+    s.x[k] = r.x;
+    s.y[k] = r.y;
+    s.vx[k] = r.vx;
+    s.vy[k] = r.vy;
+    s.angle[k] = r.angle;
+    s.omega[k] = r.omega;
+    s.fx[k] = r.fx;
+    s.fy[k] = r.fy;
+    s.torque[k] = r.torque;
+    s.radius[k] = r.radius;
+    s.mass[k] = r.mass;
+    s.invMass[k] = r.invMass;
+    s.invInertia[k] = r.invInertia;
+    s.material[k] = r.material;
+    s.id[k] = r.id;
+    s.shape[k] = r.shape;
 }
 
 /// Entry k of a particle-pair list in ids, lower id first (exchanging the bodies flips the
@@ -195,6 +202,16 @@ struct DomainWorld::Incoming {
         w.put(pairs);
         w.put(walls);
         return w.take();
+    }
+    /// Appends `other` (this rank's share to itself, which skips the message).
+    void append(Incoming&& other) {
+        const auto add = [](auto& to, auto& from) { to.insert(to.end(), from.begin(), from.end()); };
+        add(owned, other.owned);
+        add(ownedRows, other.ownedRows);
+        add(ghosts, other.ghosts);
+        add(ghostRows, other.ghostRows);
+        add(pairs, other.pairs);
+        add(walls, other.walls);
     }
     /// Appends what `bytes` (a message()) holds.
     void append(const ByteBuffer& bytes) {
@@ -338,21 +355,20 @@ void DomainWorld::assemble(Incoming in, bool countAsBuild) {
         const ParticleRecord &a = in.ghosts[p], &b = in.ghosts[q];
         return a.owner != b.owner ? a.owner < b.owner : a.id < b.id;
     });
-    model::ParticleStore store;
-    store.reserve(in.owned.size() + in.ghosts.size());
-    std::vector<Real> rows;
-    rows.reserve((in.owned.size() + in.ghosts.size()) * k);
-    for (const auto& [key, i] : order) {
-        appendRecord(store, in.owned[i]);
-        rows.insert(rows.end(), in.ownedRows.begin() + static_cast<std::ptrdiff_t>(i * k),
-                    in.ownedRows.begin() + static_cast<std::ptrdiff_t>((i + 1) * k));
-    }
+    model::ParticleStore store = storeOfSize(in.owned.size() + in.ghosts.size());
+    std::vector<Real> rows((in.owned.size() + in.ghosts.size()) * k);
+    std::size_t slot = 0;
+    const auto place = [&](const ParticleRecord& r, const std::vector<Real>& from, std::size_t i) {
+        setRecord(store, slot, r);
+        std::copy_n(from.begin() + static_cast<std::ptrdiff_t>(i * k), k,
+                    rows.begin() + static_cast<std::ptrdiff_t>(slot * k));
+        ++slot;
+    };
+    for (const auto& [key, i] : order) place(in.owned[i], in.ownedRows, i);
     const int ranks = m_comm.size();
     m_ghostBegin.assign(static_cast<std::size_t>(ranks) + 1, 0);
     for (const std::uint32_t i : ghostOrder) {
-        appendRecord(store, in.ghosts[i]);
-        rows.insert(rows.end(), in.ghostRows.begin() + static_cast<std::ptrdiff_t>(i * k),
-                    in.ghostRows.begin() + static_cast<std::ptrdiff_t>((i + 1) * k));
+        place(in.ghosts[i], in.ghostRows, i);
         ++m_ghostBegin[static_cast<std::size_t>(in.ghosts[i].owner) + 1];
     }
     m_owned = in.owned.size();
@@ -480,12 +496,19 @@ void DomainWorld::exchangeWithFlow(const std::vector<std::uint32_t>& leaving,
         if (a < m_owned)
             out[static_cast<std::size_t>(dests[destBegin[a]])].walls.push_back(wallHistoryById(s, h));
     }
+    const auto me = static_cast<std::size_t>(m_comm.rank());
     std::vector<ByteBuffer> messages(static_cast<std::size_t>(ranks));
-    for (int r = 0; r < ranks; ++r)
-        messages[static_cast<std::size_t>(r)] = out[static_cast<std::size_t>(r)].message();
+    for (std::size_t r = 0; r < messages.size(); ++r)
+        if (r != me) messages[r] = out[r].message();
+    const std::vector<ByteBuffer> received = m_comm.allToAll(std::move(messages));
+    Incoming in;  // in rank order, this rank's own share without a message
+    for (std::size_t r = 0; r < received.size(); ++r) {
+        if (r == me)
+            in.append(std::move(out[r]));
+        else
+            in.append(received[r]);
+    }
     out.clear();
-    Incoming in;
-    for (const ByteBuffer& bytes : m_comm.allToAll(std::move(messages))) in.append(bytes);
     assemble(std::move(in), true);
     ++m_stats.exchanges;
     // The work after the exchange, and the halo's share of all particles.
@@ -692,14 +715,13 @@ void DomainWorld::gather(World& copy) {
     std::iota(order.begin(), order.end(), 0u);
     std::sort(order.begin(), order.end(),
               [&](std::uint32_t p, std::uint32_t q) { return in.owned[p].id < in.owned[q].id; });
-    model::ParticleStore store;
-    store.reserve(order.size());
-    std::vector<Real> rows;
-    rows.reserve(order.size() * k);
-    for (const std::uint32_t i : order) {
-        appendRecord(store, in.owned[i]);
-        rows.insert(rows.end(), in.ownedRows.begin() + static_cast<std::ptrdiff_t>(i * k),
-                    in.ownedRows.begin() + static_cast<std::ptrdiff_t>((i + 1) * k));
+    model::ParticleStore store = storeOfSize(order.size());
+    std::vector<Real> rows(order.size() * k);
+    for (std::size_t slot = 0; slot < order.size(); ++slot) {
+        const std::uint32_t i = order[slot];
+        setRecord(store, slot, in.owned[i]);
+        std::copy_n(in.ownedRows.begin() + static_cast<std::ptrdiff_t>(i * k), k,
+                    rows.begin() + static_cast<std::ptrdiff_t>(slot * k));
     }
     const SlotOfId slotOfId(store);
     const std::vector<PairHistory> pairs = pairHistoryInSlots(std::move(in.pairs), slotOfId);
