@@ -38,33 +38,22 @@ bool NeighborList::needsRebuild(const model::ParticleStore& s, Real skin, Real w
 
 namespace {
 
-/// History entries of a list with a non-zero spring, keys mapped through oldToNew.
+/// The non-empty history of `list`, keys mapped through oldToNew (empty: kept), sorted by key.
 std::vector<PairHistory> collectHistory(const ContactList& list, const std::vector<std::uint32_t>& oldToNew,
                                         bool bothAreSlots) {
-    std::vector<PairHistory> out;
-    for (std::size_t k = 0; k < list.size(); ++k) {
-        const Real xi = list.xi[k];
-        Real zeta = list.zeta.empty() ? 0.0 : list.zeta[k];
-        const Real areaOld = list.areaOld.empty() ? 0.0 : list.areaOld[k];
-        geom::FeatureCache features = list.features.empty() ? geom::FeatureCache{} : list.features[k];
-        if (PairHistory{0, xi, zeta, areaOld, features}.empty()) continue;
-        std::uint32_t a = list.first[k], b = list.second[k];
-        if (!oldToNew.empty()) {
-            a = oldToNew[a];
+    std::vector<PairHistory> out = NeighborList::historyOf(list);
+    if (!oldToNew.empty())
+        for (PairHistory& h : out) {
+            std::uint32_t a = oldToNew[keyFirst(h.key)], b = keySecond(h.key);
             if (bothAreSlots) {
                 b = oldToNew[b];
-                // Exchanging the bodies flips n and t and the relative velocity, so v_t and the
-                // tangential spring xi are unchanged (forces.cpp: v_t = (v_i - v_j + ...) . t).
-                // The rolling velocity (omega_i - omega_j, R_j - R_i) does flip sign.
                 if (a > b) {
                     std::swap(a, b);
-                    zeta = -zeta;
-                    features = features.swapped();
+                    exchangeBodies(h.zeta, h.features);
                 }
             }
+            h.key = pairKey(a, b);
         }
-        out.push_back({pairKey(a, b), xi, zeta, areaOld, features});
-    }
     std::sort(out.begin(), out.end());
     return out;
 }

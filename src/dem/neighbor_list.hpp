@@ -68,6 +68,15 @@ struct PairHistory {
     }
 };
 
+/// The history of a pair whose two bodies exchange roles (first <-> second): exchanging them flips
+/// n and t and the relative velocity, so v_t and the tangential spring xi are unchanged
+/// (forces.cpp: v_t = (v_i - v_j + ...) . t), while the rolling velocity (omega_i - omega_j,
+/// R_j - R_i) and hence zeta flip sign, and the closest features swap their roles.
+inline void exchangeBodies(Real& zeta, geom::FeatureCache& features) noexcept {
+    zeta = -zeta;
+    features = features.swapped();
+}
+
 class NeighborList {
 public:
     ContactList pairs;         ///< particle-particle candidates

@@ -7,8 +7,6 @@
 
 namespace granulab::dem {
 
-
-
 ParticleRecord recordOf(const model::ParticleStore& s, std::size_t k, int owner) {
     return {s.x[k],          s.y[k],  s.vx[k],       s.vy[k],     s.angle[k], s.omega[k],
             s.fx[k],         s.fy[k], s.torque[k],   s.radius[k], s.mass[k],  s.invMass[k],
@@ -51,14 +49,11 @@ IdHistory pairHistoryById(const model::ParticleStore& s, const PairHistory& h, b
     lowerIsFirst = r.a < r.b;
     if (!lowerIsFirst) {
         std::swap(r.a, r.b);
-        r.zeta = -r.zeta;
-        r.features = r.features.swapped();
+        exchangeBodies(r.zeta, r.features);
     }
     r.fromOwnerOfA = fromOwnerOfLower ? 1 : 0;
     return r;
 }
-
-
 
 /// Interleaves the bits of two 16-bit cell coordinates (a Z curve: nearby cells, nearby keys).
 std::uint32_t mortonKey(std::uint32_t cx, std::uint32_t cy) noexcept {
@@ -66,7 +61,6 @@ std::uint32_t mortonKey(std::uint32_t cx, std::uint32_t cy) noexcept {
     for (int b = 0; b < 16; ++b) key |= ((cx >> b) & 1u) << (2 * b) | ((cy >> b) & 1u) << (2 * b + 1);
     return key;
 }
-
 
 /// Slot-keyed history (sorted by key) of the pairs whose both ids are in the store, preferring
 /// the record of a's owner when two ranks sent the same pair.
@@ -80,8 +74,7 @@ std::vector<PairHistory> pairHistoryInSlots(std::vector<IdHistory> records, cons
         if (sa == kRemovedSlot || sb == kRemovedSlot) continue;
         if (sa > sb) {
             std::swap(sa, sb);
-            r.zeta = -r.zeta;
-            r.features = r.features.swapped();
+            exchangeBodies(r.zeta, r.features);
         }
         out.push_back({pairKey(sa, sb), r.xi, r.zeta, r.areaOld, r.features});
     }
@@ -105,6 +98,5 @@ std::vector<PairHistory> wallHistoryInSlots(const std::vector<IdHistory>& record
 IdHistory wallHistoryById(const model::ParticleStore& s, const PairHistory& h) {
     return {s.id[keyFirst(h.key)], keySecond(h.key), 1, 0, h.xi, h.zeta, h.areaOld, h.features};
 }
-
 
 }  // namespace granulab::dem

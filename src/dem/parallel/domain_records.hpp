@@ -92,7 +92,6 @@ private:
     std::vector<std::uint32_t> m_slot;
 };
 
-
 /// Slot k of `s` as a record, owned by rank `owner` after the exchange.
 ParticleRecord recordOf(const model::ParticleStore& s, std::size_t k, int owner);
 
