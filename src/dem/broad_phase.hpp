@@ -58,6 +58,10 @@ public:
                        std::vector<std::uint64_t>& out) override;
 };
 
+/// Morton (Z-order) code of the cell (x, y): the bits of x and y interleaved (CellGrid's slot
+/// order; the domain decomposition orders its owned particles by it too).
+std::uint64_t mortonCode(std::uint32_t x, std::uint32_t y) noexcept;
+
 /// Uniform cell grid with cell size >= 2 r_max + margin, so any size distribution is safe;
 /// the grid spans the particles' bounding box, so no particle can leave it. findPairs runs on
 /// threads over blocks of slots; spatialOrder lists the cells along a Morton (Z) curve, so that

@@ -129,8 +129,6 @@ void CellGrid::findWallPairs(const model::ParticleStore& s, const model::WallSet
     std::sort(out.begin(), out.end());
 }
 
-namespace {
-/// Morton (Z-order) code of the cell (x, y): the bits of x and y interleaved.
 std::uint64_t mortonCode(std::uint32_t x, std::uint32_t y) noexcept {
     const auto spread = [](std::uint64_t v) {
         v &= 0xFFFFFFFFu;
@@ -143,7 +141,6 @@ std::uint64_t mortonCode(std::uint32_t x, std::uint32_t y) noexcept {
     };
     return spread(x) | (spread(y) << 1);
 }
-}  // namespace
 
 std::vector<std::uint32_t> CellGrid::spatialOrder(const model::ParticleStore& s) {
     bin(s, 0);

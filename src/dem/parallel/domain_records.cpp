@@ -55,13 +55,6 @@ IdHistory pairHistoryById(const model::ParticleStore& s, const PairHistory& h, b
     return r;
 }
 
-/// Interleaves the bits of two 16-bit cell coordinates (a Z curve: nearby cells, nearby keys).
-std::uint32_t mortonKey(std::uint32_t cx, std::uint32_t cy) noexcept {
-    std::uint32_t key = 0;
-    for (int b = 0; b < 16; ++b) key |= ((cx >> b) & 1u) << (2 * b) | ((cy >> b) & 1u) << (2 * b + 1);
-    return key;
-}
-
 /// Slot-keyed history (sorted by key) of the pairs whose both ids are in the store, preferring
 /// the record of a's owner when two ranks sent the same pair.
 std::vector<PairHistory> pairHistoryInSlots(std::vector<IdHistory> records, const SlotOfId& slotOf) {

@@ -107,9 +107,6 @@ void setRecord(model::ParticleStore& s, std::size_t k, const ParticleRecord& r);
 IdHistory pairHistoryById(const model::ParticleStore& s, const PairHistory& h, bool fromOwnerOfLower,
                           bool& lowerIsFirst);
 
-/// Interleaves the bits of two 16-bit cell coordinates (a Z curve: nearby cells, nearby keys).
-std::uint32_t mortonKey(std::uint32_t cx, std::uint32_t cy) noexcept;
-
 /// Slot-keyed history (sorted by key) of the pairs whose both ids are in the store, preferring
 /// the record of a's owner when two ranks sent the same pair.
 std::vector<PairHistory> pairHistoryInSlots(std::vector<IdHistory> records, const SlotOfId& slotOf);

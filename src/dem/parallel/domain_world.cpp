@@ -167,10 +167,10 @@ void DomainWorld::assemble(Incoming in, bool countAsBuild) {
     }
     std::vector<std::pair<std::uint64_t, std::uint32_t>> order(in.owned.size());
     for (std::size_t i = 0; i < in.owned.size(); ++i) {
-        const auto cell = [&](Real v, Real from) {
+        const auto cell = [&](Real v, Real from) {  // 16 bits: the code fits the upper half of the key
             return static_cast<std::uint32_t>(std::clamp<Real>((v - from) / halo, 0, 65535));
         };
-        const std::uint64_t key = mortonKey(cell(in.owned[i].x, lo[0]), cell(in.owned[i].y, lo[1]));
+        const std::uint64_t key = mortonCode(cell(in.owned[i].x, lo[0]), cell(in.owned[i].y, lo[1]));
         order[i] = {key << 32 | in.owned[i].id, static_cast<std::uint32_t>(i)};
     }
     std::sort(order.begin(), order.end());
