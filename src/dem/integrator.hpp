@@ -74,6 +74,16 @@ struct StateColumns {
     void resize(std::size_t n) {
         for (auto& c : columns) c.resize(n);
     }
+    /// Copies row k to out[0 .. columns.size()) (0 where a column does not reach k: before the
+    /// first step sized it).
+    void copyRow(std::size_t k, Real* out) const noexcept {
+        for (std::size_t c = 0; c < columns.size(); ++c) out[c] = k < columns[c].size() ? columns[c][k] : 0.0;
+    }
+    /// Sets row k where the columns reach it.
+    void setRow(std::size_t k, const Real* in) noexcept {
+        for (std::size_t c = 0; c < columns.size(); ++c)
+            if (k < columns[c].size()) columns[c][k] = in[c];
+    }
     void permute(const std::vector<std::uint32_t>& order);
     std::size_t bytes() const noexcept;
     Real* operator[](std::size_t k) noexcept { return columns[k].data(); }

@@ -315,8 +315,7 @@ void World::replaceParticles(model::ParticleStore store, const std::vector<Real>
     if (StateColumns* state = m_integrator->state()) {
         const std::size_t k = state->columns.size();
         state->resize(n);
-        for (std::size_t i = 0; i < n; ++i)
-            for (std::size_t c = 0; c < k; ++c) state->columns[c][i] = integratorRows[i * k + c];
+        for (std::size_t i = 0; i < n; ++i) state->setRow(i, integratorRows.data() + i * k);
     }
     m_broad->slotsRenumbered();
     for (auto& sp : m_config.springs) {  // a spring pulls on the rank that owns its particle
@@ -344,25 +343,6 @@ ParticleId World::admitParticles(const std::vector<NewParticle>& entering) {
         if (p.shape != model::kDiskShape) m_shapes.anyPolygon = true;
     }
     return first;
-}
-
-std::size_t World::integratorColumns() const noexcept {
-    const StateColumns* state = m_integrator->state();
-    return state ? state->columns.size() : 0;
-}
-
-void World::integratorRow(std::size_t k, Real* out) const noexcept {
-    const StateColumns* state = m_integrator->state();
-    if (!state) return;
-    for (std::size_t c = 0; c < state->columns.size(); ++c)
-        out[c] = k < state->columns[c].size() ? state->columns[c][k] : 0.0;
-}
-
-void World::setIntegratorRow(std::size_t k, const Real* in) noexcept {
-    StateColumns* state = m_integrator->state();
-    if (!state) return;
-    for (std::size_t c = 0; c < state->columns.size(); ++c)
-        if (k < state->columns[c].size()) state->columns[c][k] = in[c];
 }
 
 void World::adoptClock(const World& local) {

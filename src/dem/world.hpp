@@ -125,7 +125,7 @@ public:
     // ---- Domain decomposition (dem/parallel/domain_world.hpp) -------------------------------
     /// Replaces every particle by `store`, whose slots from `ownedEnd` on are ghosts (their
     /// forces are not used and they have no wall contacts), sets the integrator state from
-    /// `integratorRows` (integratorColumns() values per slot, slot after slot) and rebuilds the
+    /// `integratorRows` (the integrator's column count per slot, slot after slot) and rebuilds the
     /// lists with the given history (keys in the new slots). Radius bounds, ids, walls and the
     /// clock are kept. `countAsBuild`: a migration that counts in neighbors().builds (not the
     /// first split or a gathered copy). `outputCopy`: the lists get trial columns, for
@@ -134,12 +134,11 @@ public:
                           const std::vector<PairHistory>& pairHistory,
                           const std::vector<PairHistory>& wallHistory, std::size_t ownedEnd,
                           bool countAsBuild, bool outputCopy = false);
-    /// Values of per-particle integrator state (0 for an integrator without any).
-    std::size_t integratorColumns() const noexcept;
-    /// Copies slot k's integrator state to out[0 .. integratorColumns()) (zeros before the first step).
-    void integratorRow(std::size_t k, Real* out) const noexcept;
-    /// Sets slot k's integrator state (a ghost's, from its owner).
-    void setIntegratorRow(std::size_t k, const Real* in) noexcept;
+    /// The integrator's per-particle columns (nullptr: it keeps none). Fetch it once per loop:
+    /// each call is a virtual one.
+    const StateColumns* integratorState() const noexcept { return m_integrator->state(); }
+    /// The same, for the halo exchange (ghost rows only are written).
+    StateColumns* integratorStateForHalo() noexcept { return m_integrator->state(); }
     /// The particle state, for the halo exchange (ghost slots only are written).
     model::ParticleStore& storeForHalo() noexcept { return m_store; }
     /// Wall forces of all ranks (the halo sums them after the forces).

@@ -63,7 +63,8 @@ DomainWorld::DomainWorld(Communicator& comm, World whole, DomainConfig config, c
         c.removed = 0;
         c.massOut = 0;
     }
-    m_integratorColumns = m_world.integratorColumns();
+    const StateColumns* state = m_world.integratorState();
+    m_integratorColumns = state ? state->columns.size() : 0;
     m_owned = s.size();  // every particle, for the first weights
     // The extent of the particles and the walls (a scene that sources fill starts empty).
     Real lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
@@ -106,7 +107,7 @@ DomainWorld::DomainWorld(Communicator& comm, World whole, DomainConfig config, c
         if (owner != me) m_partition.forGhostRanks(c, halo, owner, [&](int r) { ghost = ghost || r == me; });
         if (owner != me && !ghost) continue;
         kept[i] = 1;
-        m_world.integratorRow(i, row.data());
+        if (state) state->copyRow(i, row.data());
         (owner == me ? in.owned : in.ghosts).push_back(recordOf(s, i, owner));
         auto& rows = owner == me ? in.ownedRows : in.ghostRows;
         rows.insert(rows.end(), row.begin(), row.end());
@@ -260,6 +261,7 @@ void DomainWorld::exchangeWithFlow(const std::vector<std::uint32_t>& leaving,
         });
         if (slot < m_owned) destBegin[slot + 1] = static_cast<std::uint32_t>(dests.size());
     };
+    const StateColumns* state = m_world.integratorState();
     std::size_t gone = 0;  // leaving is ascending
     for (std::size_t i = 0; i < m_owned; ++i) {
         if (gone < leaving.size() && leaving[gone] == i) {  // through an outlet: sent nowhere
@@ -267,7 +269,7 @@ void DomainWorld::exchangeWithFlow(const std::vector<std::uint32_t>& leaving,
             destBegin[i + 1] = static_cast<std::uint32_t>(dests.size());
             continue;
         }
-        m_world.integratorRow(i, row.data());
+        if (state) state->copyRow(i, row.data());
         send(recordOf(s, i, 0), i);
     }
     // New particles: created by the rank whose slab holds them (every rank has the same list),
@@ -348,6 +350,7 @@ void DomainWorld::updateHalo() {
     const double started = wallSeconds();
     const std::size_t k = m_integratorColumns, per = 6 + k;
     model::ParticleStore& s = m_world.storeForHalo();
+    StateColumns* state = m_world.integratorStateForHalo();
     // Point to point, to the neighbouring slabs only: rank r keeps ghosts of this rank exactly
     // when this rank has slots to send to it (the same rule on both sides).
     std::vector<Real> values;
@@ -363,7 +366,7 @@ void DomainWorld::updateHalo() {
             v[3] = s.vy[i];
             v[4] = s.angle[i];
             v[5] = s.omega[i];
-            m_world.integratorRow(i, v + 6);
+            if (state) state->copyRow(i, v + 6);
             v += per;
         }
         m_comm.send(r, kHaloTag, packPod(std::span<const Real>(values)));
@@ -385,7 +388,7 @@ void DomainWorld::updateHalo() {
             s.vy[g] = v[3];
             s.angle[g] = v[4];
             s.omega[g] = v[5];
-            if (k > 0) m_world.setIntegratorRow(g, v + 6);
+            if (state) state->setRow(g, v + 6);
         }
     }
     m_stats.haloSeconds += wallSeconds() - started;
@@ -505,11 +508,12 @@ std::size_t DomainWorld::memoryBytes() {
 void DomainWorld::gather(World& copy) {
     const model::ParticleStore& s = m_world.store();
     const std::size_t k = m_integratorColumns;
+    const StateColumns* state = m_world.integratorState();
     Incoming mine;
     std::vector<Real> row(k);
     for (std::size_t i = 0; i < m_owned; ++i) {
         mine.owned.push_back(recordOf(s, i, m_comm.rank()));
-        m_world.integratorRow(i, row.data());
+        if (state) state->copyRow(i, row.data());
         mine.ownedRows.insert(mine.ownedRows.end(), row.begin(), row.end());
     }
     bool lowerIsFirst = true;
