@@ -139,9 +139,9 @@ std::vector<Real> DomainWorld::workWeights() const {
 }
 
 void DomainWorld::measureDomains() {
-    const std::vector<Real> w = workWeights();
-    const double mine[3] = {std::accumulate(w.begin(), w.end(), 0.0), static_cast<double>(m_stats.owned),
-                            static_cast<double>(m_stats.ghosts)};
+    m_weights = workWeights();
+    const double mine[3] = {std::accumulate(m_weights.begin(), m_weights.end(), 0.0),
+                            static_cast<double>(m_stats.owned), static_cast<double>(m_stats.ghosts)};
     const std::vector<double> all = m_comm.allGather(std::span<const double>(mine, 3));
     double most = 0, total = 0, owned = 0, ghosts = 0;
     for (std::size_t r = 0; r < all.size() / 3; ++r) {
@@ -226,14 +226,14 @@ void DomainWorld::exchangeWithFlow(const std::vector<std::uint32_t>& leaving,
     const double started = wallSeconds();
     const int ranks = m_comm.size();
     const model::ParticleStore& s = m_world.store();
-    // The work measured after the last exchange decides (it changes slowly between exchanges).
+    // The work measured after the last exchange decides: the lists, and so the weights, are
+    // those of that exchange.
     if (mayBalance && m_config.balance && ranks > 1) {
         if (m_stats.imbalance > m_config.balanceTrigger) {
-            const std::vector<Real> w = workWeights();
             const std::vector<Real>& coords = m_partition.axis == 0 ? s.x : s.y;
             m_partition =
-                balancedSlabs(m_comm, m_partition.axis, std::span<const Real>(coords.data(), m_owned), w,
-                              m_partition.lower(1), m_partition.upper(ranks - 2));
+                balancedSlabs(m_comm, m_partition.axis, std::span<const Real>(coords.data(), m_owned),
+                              m_weights, m_partition.lower(1), m_partition.upper(ranks - 2));
             ++m_stats.rebalances;
         }
     }

@@ -121,6 +121,8 @@ private:
     std::vector<std::vector<std::uint32_t>> m_sendSlots;
     /// Ghost slots owned by rank r: [m_ghostBegin[r], m_ghostBegin[r + 1]).
     std::vector<std::uint32_t> m_ghostBegin;
+    /// workWeights() of the lists of the last exchange (measureDomains), for the next one.
+    std::vector<Real> m_weights;
     DomainStats m_stats;
     bool m_stopRequested = false;
     bool m_deepOverlap = false;        ///< this rank's last step reached a deep overlap
