@@ -369,15 +369,15 @@ void World::adoptClock(const World& local) {
 }
 
 void World::evaluateForOutput() {
+    if (m_list.pairs.xiTrial.size() != m_list.pairs.size() ||
+        m_list.wallPairs.xiTrial.size() != m_list.wallPairs.size())
+        return;  // the lists were built without trial columns: nothing may be written
     const BodyForces body = bodyForcesAt(m_step);
     const std::vector<Real> fx = m_store.fx, fy = m_store.fy, torque = m_store.torque;
     const std::vector<Vec2> wallForce = m_wallForce;
     // Closest features are updated in place: keep those of the run (a checkpoint follows).
     const std::vector<geom::FeatureCache> pairFeatures = m_list.pairs.features,
                                           wallFeatures = m_list.wallPairs.features;
-    if (m_list.pairs.xiTrial.size() != m_list.pairs.size() ||
-        m_list.wallPairs.xiTrial.size() != m_list.wallPairs.size())
-        return;  // the lists were built without trial columns: nothing may be written
     evaluateForces(body, DriftVelocities{}, true);  // trial columns: the accepted history stays
     if (m_field) m_field->update(time());           // the fluid statistics of the whole set
     evaluateFieldForces(body);
