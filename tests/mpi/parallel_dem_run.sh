@@ -92,21 +92,21 @@ cp -r "$work/pcsettled" "$work/pc1"
 cp -r "$work/pcsettled" "$work/pc2"
 "$granulab" run "$bed" $pc --set run.end_time=2.3 --resume "$work/pc1"
 on_ranks 2 "$granulab" run "$bed" $pc --set run.end_time=2.3 --resume "$work/pc2"
-cp "$bed" "$work/spring.toml"
-printf '\n[[spring]]\nparticle = 100\nk = 200.0\npull_start = [20.0, 4.0]\nspeed = 5.0\n' >>"$work/spring.toml"
-"$granulab" run "$work/spring.toml" $small --set run.end_time=0.3 --out "$work/spring1"
-on_ranks 2 "$granulab" run "$work/spring.toml" $small --set run.end_time=0.3 --out "$work/spring2"
+# The bed with one more section, 0.3 s from the start on one rank (NAME1) and on 2 (NAME2).
+bed_with() {  # bed_with NAME SECTION-TEXT [options]
+    name=$1 section=$2
+    shift 2
+    cp "$bed" "$work/$name.toml"
+    printf '%b' "$section" >>"$work/$name.toml"
+    "$granulab" run "$work/$name.toml" $small "$@" --set run.end_time=0.3 --out "$work/${name}1"
+    on_ranks 2 "$granulab" run "$work/$name.toml" $small "$@" --set run.end_time=0.3 --out "$work/${name}2"
+}
+bed_with spring '\n[[spring]]\nparticle = 100\nk = 200.0\npull_start = [20.0, 4.0]\nspeed = 5.0\n'
 
 # A fluid and mutual attraction within a cutoff.
-cp "$bed" "$work/fluid.toml"
-printf '\n[fluid]\ndensity = 1.0\nviscosity = 0.05\ndrag = "stokes"\nvelocity = [1.0, 5.0]\n' >>"$work/fluid.toml"
-sphere="--set dem.mass_model=\"sphere\""
-"$granulab" run "$work/fluid.toml" $small $sphere --set run.end_time=0.3 --out "$work/fluid1"
-on_ranks 2 "$granulab" run "$work/fluid.toml" $small $sphere --set run.end_time=0.3 --out "$work/fluid2"
-cp "$bed" "$work/attraction.toml"
-printf '\n[attraction]\nconstant = 5.0\ncutoff = 4.0\n' >>"$work/attraction.toml"
-"$granulab" run "$work/attraction.toml" $small --set run.end_time=0.3 --out "$work/attraction1"
-on_ranks 2 "$granulab" run "$work/attraction.toml" $small --set run.end_time=0.3 --out "$work/attraction2"
+bed_with fluid '\n[fluid]\ndensity = 1.0\nviscosity = 0.05\ndrag = "stokes"\nvelocity = [1.0, 5.0]\n' \
+    --set dem.mass_model=\"sphere\"
+bed_with attraction '\n[attraction]\nconstant = 5.0\ncutoff = 4.0\n'
 
 # All-pairs attraction runs on one rank only: refused with exit status 2, naming mpirun.
 cp "$examples/disks_in_box.toml" "$work/allpairs.toml"
