@@ -92,6 +92,17 @@ public:
     [[noreturn]] virtual void abort(int status) = 0;
 };
 
+/// Every rank's `mine` (any size per rank), concatenated in rank order, on every rank: one
+/// all-to-all that sends the same bytes to each rank.
+template <class T>
+std::vector<T> allGatherPod(Communicator& comm, std::span<const T> mine) {
+    const ByteBuffer bytes = packPod(mine);
+    std::vector<ByteBuffer> out(static_cast<std::size_t>(comm.size()), bytes);
+    std::vector<T> all;
+    for (const ByteBuffer& b : comm.allToAll(std::move(out))) unpackPod(b, all);
+    return all;
+}
+
 /// Rank 0 of 1: messages to oneself are queued in order per tag; collectives return their input.
 /// receive() of a tag with nothing queued throws std::logic_error (nobody could ever send it);
 /// a rank other than 0 in send/receive/probe throws std::logic_error too.

@@ -4,9 +4,13 @@
 // (fluid/drag_laws.hpp), static buoyancy -rho_f V g (Eq. 3.63), the pressure-gradient force
 // -V grad p where the field carries p; and the seed's mutual Newtonian attraction (spec 5.6),
 // all pairs or within a cutoff on a cell grid. The particles' volume is that of a sphere of their
-// radius, V = 4/3 pi R^3.
+// radius, V = 4/3 pi R^3. On the ranks of a domain decomposition (FieldRanks) the voidage cells
+// and the attraction between all pairs reach beyond the ghost layer: they gather what they need
+// from every rank (docs/physics/dem-mpi.md).
 #pragma once
+#include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "dem/cell_bins.hpp"
@@ -14,7 +18,20 @@
 #include "fluid/field_series.hpp"
 #include "model/particle_store.hpp"
 
+namespace granulab {
+class Communicator;
+}
+
 namespace granulab::dem {
+
+/// This process's place in a domain decomposition (dem/parallel/), as the field stage sees it:
+/// the slots [0, owned) of the store are this rank's particles, the others ghosts of its
+/// neighbours'. `comm` nullptr: one process, every particle its own. Every rank calls the field
+/// stage at the same evaluations (the stage runs collectives).
+struct FieldRanks {
+    Communicator* comm = nullptr;
+    std::size_t owned = 0;
+};
 
 struct FluidForceConfig {
     fluid::DragLaw drag;
@@ -37,21 +54,27 @@ struct FluidStats {
 /// interpolant of the cell each particle slot was in (fluid::LocalPatch; a patch is valid for any
 /// particle inside its cell, so slots renumbered since only cost a lookup).
 struct VoidageScratch {
-    CellBins bins;                            ///< particles by voidage cell
-    std::vector<Real> eps;                    ///< voidage at each particle
-    std::vector<fluid::LocalPatch> patches;   ///< by slot, of the current field
+    CellBins bins;                                               ///< particles by voidage cell (one process)
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed;  ///< (cell key, slot) (ranks)
+    std::vector<Real> eps;                                       ///< voidage at each particle
+    std::vector<fluid::LocalPatch> patches;                      ///< by slot, of the current field
     std::uint64_t patchesGeneration = ~0ull;  ///< FieldSeries::generation() the patches belong to
 };
 
 /// Adds the fluid forces to s.fx, s.fy (torques: none, spec 5.1). `g` [m/s^2] the gravity of the
-/// evaluation (buoyancy uses it even when the weight is switched off, as the seed does).
+/// evaluation (buoyancy uses it even when the weight is switched off, as the seed does). On ranks
+/// the voidage cells sum every rank's owned particles (one reduction and one all-gather of the
+/// occupied cells), so each cell holds what it holds on one process, summed in rank order.
 void addFluidForces(model::ParticleStore& s, const fluid::FieldSeries& field, const FluidForceConfig& c,
-                    Vec2 g, FluidStats& stats, VoidageScratch& scratch) noexcept;
+                    Vec2 g, FluidStats& stats, VoidageScratch& scratch, const FieldRanks& ranks = {});
 
 /// Mutual attraction F = G m_i m_j / d^2 along the centre line (cfddem Eq. 3.72), skipping
 /// coincident centres; all pairs (cutoff 0) or pairs closer than `cutoff` [m] through a cell grid
 /// (`bins` is scratch; particles spread far apart use a sparse layout, never all pairs). Pairs in a
-/// fixed order, so the sums are deterministic.
-void addAttraction(model::ParticleStore& s, Real constant, Real cutoff, CellBins& bins) noexcept;
+/// fixed order, so the sums are deterministic. On ranks, a cutoff stays within the ghost layer (the
+/// domain widens it); all pairs gather every rank's owned particles each evaluation and sum, for
+/// each owned particle, the pulls of all others in rank and slot order.
+void addAttraction(model::ParticleStore& s, Real constant, Real cutoff, CellBins& bins,
+                   const FieldRanks& ranks = {});
 
 }  // namespace granulab::dem

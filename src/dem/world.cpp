@@ -166,10 +166,13 @@ void World::evaluateForces(const BodyForces& body, const DriftVelocities& drift,
 }
 
 void World::evaluateFieldForces(const BodyForces& body) {
+    const FieldRanks ranks{m_fieldComm, std::min<std::size_t>(m_list.ownedEnd, m_store.size())};
     if (m_field)
-        addFluidForces(m_store, *m_field, m_config.fluid->forces, body.gravity, m_fluidStats, m_voidage);
+        addFluidForces(m_store, *m_field, m_config.fluid->forces, body.gravity, m_fluidStats, m_voidage,
+                       ranks);
     if (m_config.attraction)
-        addAttraction(m_store, m_config.attraction->constant, m_config.attraction->cutoff, m_attractionCells);
+        addAttraction(m_store, m_config.attraction->constant, m_config.attraction->cutoff, m_attractionCells,
+                      ranks);
 }
 
 BodyForces World::bodyForcesAt(std::int64_t step) const noexcept {

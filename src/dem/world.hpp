@@ -145,6 +145,9 @@ public:
     std::vector<Vec2>& wallForceForSum() noexcept { return m_wallForce; }
     /// Particles in and out are the domain decomposition's (finishStep leaves them alone).
     void setExternalFlow(bool on) noexcept { m_externalFlow = on; }
+    /// The communicator of the domain decomposition for the field stage (voidage cells, attraction
+    /// between all pairs), which gathers from every rank; nullptr: one process.
+    void setFieldCommunicator(Communicator* comm) noexcept { m_fieldComm = comm; }
     /// Slots (ascending, owned ones only) that leave through an outlet at the current time; booked.
     std::vector<std::uint32_t> flowLeaving() { return m_flow.leaving(m_store, time()); }
     /// What enters at the current time, placed against `everyone` (every rank's particles, the
@@ -214,6 +217,9 @@ public:
     /// last evaluation.
     const fluid::FieldSeries* field() const noexcept { return m_field.get(); }
     const FluidStats& fluidStats() const noexcept { return m_fluidStats; }
+    /// Replaces the fluid statistics by those of every rank's last evaluation (the domain's
+    /// gather, after evaluateForOutput: the ranks evaluated where one process does).
+    void setFluidStats(const FluidStats& stats) noexcept { m_fluidStats = stats; }
     /// Why the last step returned kStepFieldFailed.
     const std::string& fieldError() const noexcept { return m_fieldError; }
     /// Force evaluations since t = 0 (more than the steps for an iterating predictor-corrector).
@@ -268,13 +274,14 @@ private:
     Real m_minRadius = 0;
     Real m_maxRadius = 0;  ///< [m] largest radius since t = 0 (outlet capture zones)
     ParticleFlow m_flow;
-    ParticleId m_nextId = 0;           ///< id of the next inserted particle
-    std::size_t m_lawChangesDone = 0;  ///< entries of m_config.lawChanges applied
-    bool m_lawRebuildDue = false;      ///< a law change regroups the lists before the next forces
-    bool m_externalFlow = false;       ///< particles in and out are the domain decomposition's
-    LawTable m_baseLaws;               ///< the laws of t = 0
-    Real m_scale = 1;                  ///< global size scale s of the radius column and corners
-    Real m_scaleAtRebuild = 1;         ///< s at the last neighbour rebuild
+    ParticleId m_nextId = 0;              ///< id of the next inserted particle
+    std::size_t m_lawChangesDone = 0;     ///< entries of m_config.lawChanges applied
+    bool m_lawRebuildDue = false;         ///< a law change regroups the lists before the next forces
+    bool m_externalFlow = false;          ///< particles in and out are the domain decomposition's
+    Communicator* m_fieldComm = nullptr;  ///< the field stage's ranks (setFieldCommunicator)
+    LawTable m_baseLaws;                  ///< the laws of t = 0
+    Real m_scale = 1;                     ///< global size scale s of the radius column and corners
+    Real m_scaleAtRebuild = 1;            ///< s at the last neighbour rebuild
     std::unique_ptr<fluid::FieldSeries> m_field;
     FluidStats m_fluidStats;
     VoidageScratch m_voidage;

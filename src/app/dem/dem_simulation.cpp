@@ -21,7 +21,6 @@
 #include "dem/parallel/domain_world.hpp"
 #include "dem/setup.hpp"
 #include "dem/step_clock.hpp"
-#include "fluid/drag_laws.hpp"
 #include "io/csv_writers.hpp"
 #include "io/validate_dem.hpp"
 #include "model/material_names.hpp"
@@ -48,11 +47,9 @@ public:
           m_endStep(dem::stepsIn(scene.run.endTime, scene.dem.dt)),
           m_initialParticles(m_world.store().size()) {
         if (worldCommunicator().size() >
-            1) {  // domain decomposition: this rank's part comes from a whole world
-            checkDecomposable(scene);
+            1)  // domain decomposition: this rank's part comes from a whole world
             m_whole.emplace(dem::makeWorld(
                 scene, prepared.initial, m_world.field() ? m_world.field()->source() : fluid::FieldSource{}));
-        }
     }
 
     double time() const override { return m_domain ? m_domain->time() : m_world.time(); }
@@ -524,24 +521,6 @@ private:
     }
     /// The World that steps: the engine on one rank, this rank's part on several.
     const dem::World& stepWorld() const noexcept { return m_domain ? m_domain->local() : m_world; }
-
-    /// The engine features that run on one rank only for now: a clear refusal (exit status 2).
-    static void checkDecomposable(const model::SceneDef& scene) {
-        std::vector<std::string> missing;
-        if (scene.fluid.present && fluid::needsVoidage(fluid::makeDragLaw(scene.fluid.drag, 0)))
-            missing.push_back("the di_felice drag (its voidage cells reach beyond the ghost layer)");
-        if (scene.attraction.present && !(scene.attraction.cutoff > 0))
-            missing.push_back("[attraction] between all pairs (attraction.cutoff = 0)");
-        if (missing.empty()) return;
-        std::string list;
-        for (const auto& f : missing) list += (list.empty() ? "" : ", ") + f;
-        Diagnostics d;
-        d.error(scene.run.loc, "mpirun",
-                fmt::format("this scene uses {}, which {} on one MPI rank only in this version; "
-                            "run it without mpirun (threads: run.threads)",
-                            list, missing.size() == 1 ? "runs" : "run"));
-        d.throwIfAny();
-    }
 
     /// Hands the whole world (initialised or loaded) to the domain decomposition; the adapter's
     /// own world becomes the gathered copy for outputs (empty until the first gather).

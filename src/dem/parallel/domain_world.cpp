@@ -56,6 +56,7 @@ DomainWorld::DomainWorld(Communicator& comm, World whole, DomainConfig config, c
     const int ranks = comm.size(), me = comm.rank();
     m_particles = s.size();
     m_world.setExternalFlow(true);
+    m_world.setFieldCommunicator(&comm);  // voidage cells and all-pairs attraction gather from every rank
     if (me != 0) {  // removals are booked by the rank that removes, and summed: start from the root's
         FlowCounters& c = m_world.flowForDomain().countersForDomain();
         std::fill(c.outletRemoved.begin(), c.outletRemoved.end(), 0);
@@ -395,6 +396,7 @@ void DomainWorld::updateHalo() {
 }
 
 std::uint32_t DomainWorld::step(bool stop) {
+    m_stepped = true;
     std::uint32_t status = m_world.beginStep();
     updateHalo();
     double started = wallSeconds();
@@ -480,11 +482,7 @@ model::ParticleStore DomainWorld::everyParticle() {
     std::vector<Light> mine(m_owned);
     for (std::size_t i = 0; i < m_owned; ++i)
         mine[i] = {s.x[i], s.y[i], s.vx[i], s.vy[i], s.radius[i], s.id[i]};
-    // Every rank's list to every rank (the same bytes to each).
-    const ByteBuffer bytes = packPod(std::span<const Light>(mine));
-    std::vector<ByteBuffer> out(static_cast<std::size_t>(m_comm.size()), bytes);
-    std::vector<Light> all;
-    for (const ByteBuffer& b : m_comm.allToAll(std::move(out))) unpackPod(b, all);
+    std::vector<Light> all = allGatherPod(m_comm, std::span<const Light>(mine));
     std::sort(all.begin(), all.end(), [](const Light& a, const Light& b) { return a.id < b.id; });
     model::ParticleStore every;
     every.reserve(all.size());
@@ -536,6 +534,13 @@ void DomainWorld::gather(World& copy) {
         wallSums.push_back(f.y);
     }
     if (!m_sumWallsEveryStep) m_comm.allSum(wallSums);
+    // The fluid statistics of the ranks' last evaluation (their owned particles), as one process
+    // reports them; the copy's output evaluation would see the state after the step instead.
+    const FluidStats& fluid = m_world.fluidStats();
+    double fluidSums[3] = {fluid.drag.x, fluid.drag.y, static_cast<double>(fluid.outside)};
+    double fluidMax[2] = {fluid.maxReynolds, -fluid.minVoidage};
+    m_comm.allSum(fluidSums);
+    m_comm.allMax(fluidMax);
     const std::vector<ByteBuffer> all = m_comm.gather(mine.message());
     if (!m_comm.root()) return;
     Incoming in;
@@ -569,6 +574,14 @@ void DomainWorld::gather(World& copy) {
     const std::size_t n = store.size();
     copy.replaceParticles(std::move(store), rows, pairs, walls, n, false, true);
     copy.evaluateForOutput();
+    if (copy.field() && m_stepped) {  // before the first step, the whole world's (the copy's own)
+        FluidStats reduced;
+        reduced.drag = {fluidSums[0], fluidSums[1]};
+        reduced.outside = static_cast<std::uint64_t>(fluidSums[2]);
+        reduced.maxReynolds = fluidMax[0];
+        reduced.minVoidage = -fluidMax[1];
+        copy.setFluidStats(reduced);
+    }
 }
 
 }  // namespace granulab::dem

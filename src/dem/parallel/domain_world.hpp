@@ -128,6 +128,7 @@ private:
     bool m_deepOverlap = false;        ///< this rank's last step reached a deep overlap
     bool m_sumWallsEveryStep = false;  ///< a piston needs the total wall force at every step
     bool m_anyLeft = false;
+    bool m_stepped = false;  ///< a step since the decomposition (the fluid statistics are this rank's)
     static constexpr int kHaloTag = 0x4841;
 };
 
