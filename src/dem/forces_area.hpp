@@ -137,8 +137,8 @@ inline Real potentialInvL0(Real boundI, Real boundJ) noexcept {
 /// (the exact force of W(A) = E A^2/(2 l0^2) - k_coh A: (dU/dA) pull at s plus the couple
 /// (dU/dA) twist; damping and friction as gc2d's with l = l0 and F_el = W'(A) pull . n).
 template <class N, class D, class T>
-AreaForce areaLaw(const N& nl, const D& dl, const T& tl, const AreaPair& c, Real dt, Real invDt, Real& ioXi,
-                  Real& ioAreaOld) noexcept {
+[[gnu::always_inline]] inline AreaForce areaLaw(const N& nl, const D& dl, const T& tl, const AreaPair& c,
+                                                Real dt, Real invDt, Real& ioXi, Real& ioAreaOld) noexcept {
     constexpr bool kPotential = std::is_same_v<N, AreaPotentialNormal>;
     const auto& g = c.g;
     Real invL;
