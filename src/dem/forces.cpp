@@ -93,27 +93,33 @@ void tileForces(std::uint32_t t, model::ParticleStore& s, const model::WallSet& 
                     using N = std::remove_pointer_t<decltype(nT)>;
                     using D = std::remove_pointer_t<decltype(dT)>;
                     using T = std::remove_pointer_t<decltype(tT)>;
-                    const auto run = [&](auto crossTag) {
-                        constexpr bool kCross = decltype(crossTag)::value;
+                    const auto run = [&](auto crossTag, auto logTag) {
+                        constexpr bool kCross = decltype(crossTag)::value, kLog = decltype(logTag)::value;
                         if constexpr (kAreaForm<N, D, T>) {
-                            detail::areaPairs<N, D, T, kCross>(s, list.pairs, b, e, laws, drift, dt,
-                                                               trialHistory, stats, shapes, features, log,
-                                                               deferred, crossBegin);
+                            detail::areaPairs<N, D, T, kCross, kLog>(s, list.pairs, b, e, laws, drift, dt,
+                                                                     trialHistory, stats, shapes, features,
+                                                                     log, deferred, crossBegin);
                         } else if constexpr (kDepthForm<N, D, T>) {
                             if (laws.hasRolling())
-                                detail::diskPairs<N, D, T, true, kCross>(s, list.pairs, b, e, laws, drift, dt,
-                                                                         body.overlapGuard, trialHistory,
-                                                                         stats, log, deferred, crossBegin);
+                                detail::diskPairs<N, D, T, true, kCross, kLog>(
+                                    s, list.pairs, b, e, laws, drift, dt, body.overlapGuard, trialHistory,
+                                    stats, log, deferred, crossBegin);
                             else
-                                detail::diskPairs<N, D, T, false, kCross>(s, list.pairs, b, e, laws, drift,
-                                                                          dt, body.overlapGuard, trialHistory,
-                                                                          stats, log, deferred, crossBegin);
+                                detail::diskPairs<N, D, T, false, kCross, kLog>(
+                                    s, list.pairs, b, e, laws, drift, dt, body.overlapGuard, trialHistory,
+                                    stats, log, deferred, crossBegin);
                         }
                     };
+                    const auto withLog = [&](auto crossTag) {
+                        if (log)
+                            run(crossTag, std::true_type{});
+                        else
+                            run(crossTag, std::false_type{});
+                    };
                     if (cross)
-                        run(std::true_type{});
+                        withLog(std::true_type{});
                     else
-                        run(std::false_type{});
+                        withLog(std::false_type{});
                 });
     if (body.wallContacts)
         detail::forEachBucketIn(

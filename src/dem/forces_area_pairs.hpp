@@ -32,7 +32,8 @@ inline void assertAreaBucket([[maybe_unused]] const ContactList& list, [[maybe_u
 /// gc2d area contacts of one bucket of particle pairs (any shapes); N: AreaNormal or AreaPotentialNormal.
 /// kCross: a cross bucket (j in another tile): j's share goes to deferred[p - crossBegin] (zero
 /// when not touching) instead of j's sums. `features`: the closest-feature work of this tile.
-template <class N, class D, class T, bool kCross>
+/// kLog: record every contact in `log` (output steps only; a compile-time switch, as diskPairs').
+template <class N, class D, class T, bool kCross, bool kLog>
 void areaPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, std::uint32_t end,
                const LawTable& laws, const DriftVelocities& drift, Real dt, bool trialHistory,
                ForceStats& stats, const ShapeContext& sc, geom::FeatureStats& features, ContactLog* log,
@@ -92,7 +93,7 @@ void areaPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
                 s.fy[j] -= f.onI.y;
                 s.torque[j] -= torqueJ;
             }
-            if (log)  // normal from i toward j: the geometry's normal pushes i away from j
+            if constexpr (kLog)  // normal from i toward j: the geometry's normal pushes i away from j
                 log->addArea(s.id[i], s.id[j], -1, c.g.point, -c.g.normal, f.onI, f.overlapDepth, c.g.area,
                              norm(c.g.c2 - c.g.c1));
             const Real rMin = std::min(s.radius[i], s.radius[j]);

@@ -84,8 +84,9 @@ constexpr bool kAreaForm = kAreaNormal<N>&& kAreaDamping<D>&& kAreaTangential<T>
 
 /// Tangential displacement [m] of the contact points of the disks i and j during the step, from
 /// the drift velocities; n points from i to j.
-inline Real tangentialIncrement(const DriftVelocities& d, std::uint32_t i, std::uint32_t j, Real ri, Real rj,
-                                Real nx, Real ny, Real dt) noexcept {
+[[gnu::always_inline]] inline Real tangentialIncrement(const DriftVelocities& d, std::uint32_t i,
+                                                       std::uint32_t j, Real ri, Real rj, Real nx, Real ny,
+                                                       Real dt) noexcept {
     const Real wsum = d.omega[i] * ri + d.omega[j] * rj;
     const Real vrx = d.vx[i] - d.vx[j] - wsum * ny;
     const Real vry = d.vy[i] - d.vy[j] + wsum * nx;

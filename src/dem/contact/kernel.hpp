@@ -29,8 +29,9 @@ struct ResolvedLaw {
 /// the contact's history, updated in place.
 /// kRolling = false compiles the rolling-resistance branch out (no rolling law in the scene).
 template <class Normal, class Damping, class Tangential, bool kRolling = true>
-inline ContactForce evaluateContact(const ResolvedLaw<Normal, Damping, Tangential>& law,
-                                    const ContactKinematics& k, Real& ioXi, Real& ioZeta) noexcept {
+[[gnu::always_inline]] inline ContactForce evaluateContact(
+    const ResolvedLaw<Normal, Damping, Tangential>& law, const ContactKinematics& k, Real& ioXi,
+    Real& ioZeta) noexcept {
     const Real kn = law.normal.stiffness(k.overlap, k.reff);
     const Real cn = law.damping.coefficient(k.meff, kn);
     Real fn = law.normal.force(k.overlap, k.reff) + cn * k.vn;

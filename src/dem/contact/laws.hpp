@@ -290,8 +290,8 @@ inline Real springEnergy(Real k, Real xi, Real cap) noexcept {
 /// Coulomb cap shared by the tangential springs: |F_t| <= mu |F_n|. When the trial force exceeds
 /// the cap, the force is scaled onto it and, if `resetSpring`, the spring xi is reset so that
 /// kt xi + ct vt gives exactly the capped force (Cundall's fix, LAMMPS convention).
-inline Real coulombCap(Real trial, Real fn, Real mu, Real kt, Real ct, Real vt, bool resetSpring,
-                       Real& ioXi) noexcept {
+[[gnu::always_inline]] inline Real coulombCap(Real trial, Real fn, Real mu, Real kt, Real ct, Real vt,
+                                              bool resetSpring, Real& ioXi) noexcept {
     const Real cap = mu * std::abs(fn);
     const Real mag = std::abs(trial);
     if (mag <= cap) return trial;
@@ -333,7 +333,8 @@ struct CundallStrack {
     Real gammaT = 0;  ///< [1/s] mass-scaled tangential damping
     Real mu = 0;      ///< Coulomb friction coefficient
 
-    Real force(const ContactKinematics& k, Real /*kn*/, Real fn, Real& ioXi) const noexcept {
+    [[gnu::always_inline]] Real force(const ContactKinematics& k, Real /*kn*/, Real fn,
+                                      Real& ioXi) const noexcept {
         const Real c = ct + k.meff * gammaT;
         ioXi += k.dxt;
         return coulombCap(-(kt * ioXi + c * k.vt), fn, mu, kt, c, k.vt, true, ioXi);
@@ -390,7 +391,8 @@ struct MindlinTangential {
     Real stiffness(Real overlap, Real reff) const noexcept {
         return literal ? eightG * std::sqrt(reff) * overlap : eightG * std::sqrt(reff * overlap);
     }
-    Real force(const ContactKinematics& k, Real kn, Real fn, Real& ioXi) const noexcept {
+    [[gnu::always_inline]] Real force(const ContactKinematics& k, Real kn, Real fn,
+                                      Real& ioXi) const noexcept {
         const Real kt = stiffness(k.overlap, k.reff);
         const Real ct = 2.0 * ratio * std::sqrt(k.meff * kn);
         ioXi += k.dxt;
