@@ -13,6 +13,7 @@
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/cfddem_files.hpp"
+#include "io/gsi_scene.hpp"
 #include "io/scene_toml_writer.hpp"
 
 namespace granulab::app {
@@ -84,17 +85,24 @@ bool isCfddemInput(const std::string& path) {
 }
 
 model::SceneDef readCfddemScene(const std::string& dir, const std::vector<io::Override>& overrides) {
-    model::SceneDef scene = io::readCfddemFolder(dir);
+    return withOverrides(io::readCfddemFolder(dir), overrides);
+}
+
+model::SceneDef readGsiScene(const std::string& path, const std::vector<io::Override>& overrides) {
+    return withOverrides(io::readGsiFile(path), overrides);
+}
+
+model::SceneDef withOverrides(model::SceneDef scene, const std::vector<io::Override>& overrides) {
     if (overrides.empty()) return scene;
     // The overrides act on the TOML form of the scene, like on a scene file; paths stay relative
-    // to the folder (the text "lives" at DIR/conditions.txt).
+    // to the scene's own file (the text "lives" at scene.path).
     const std::string textName = scene.path + " (as TOML)";
     std::string text;
     try {
         text = io::sceneToToml(scene, scene.path);
     } catch (const std::invalid_argument& e) {
         throw SceneError(
-            makeDiagnostic(dir, 0, "--set", fmt::format("cannot apply --set here: {}", e.what())));
+            makeDiagnostic(scene.path, 0, "--set", fmt::format("cannot apply --set here: {}", e.what())));
     }
     model::SceneDef changed = app::readSceneText(text, textName, overrides);
     LocationRestorer(textName, scene.path).restore(changed, scene);

@@ -34,4 +34,11 @@ bool isCfddemInput(const std::string& path);
 /// DIR/conditions.txt either way.
 model::SceneDef readCfddemScene(const std::string& dir, const std::vector<io::Override>& overrides);
 
+/// The scene of a gc2d gsi file (io/gsi_scene.hpp), with overrides as for a cfddem folder.
+model::SceneDef readGsiScene(const std::string& path, const std::vector<io::Override>& overrides);
+
+/// `scene` with `overrides` applied to its TOML form (io::sceneToToml, read again with them);
+/// every location that did not come from a --set points back into the scene's own files.
+model::SceneDef withOverrides(model::SceneDef scene, const std::vector<io::Override>& overrides);
+
 }  // namespace granulab::app

@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "io/dem_sections.hpp"
 #include "io/edmd_sections.hpp"
+#include "io/gsi_scene.hpp"
 
 namespace granulab::app {
 
@@ -52,6 +53,7 @@ std::vector<io::SceneSections> sceneSections() {
 model::SceneDef readScene(const std::string& path, const std::vector<io::Override>& overrides) {
     // A folder of the cfddem seed's input files (conditions.txt, boundary.txt, startvalue.txt).
     if (isCfddemInput(path)) return readCfddemScene(path, overrides);
+    if (io::isGsiPath(path)) return readGsiScene(path, overrides);  // gc2d's scene language
     return io::readScene(path, overrides, sceneSections());
 }
 
