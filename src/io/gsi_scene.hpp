@@ -36,7 +36,7 @@
 //     attach DRAG_FIXING_POINT (body frame), pull_start DRAG_PULLING_POINT, speed DRAG_VELOCITY
 //     0.1, direction DRAG_ANGLE 0, DRAG_TIME 0 .. 1. The restart state of a gso (PC_TRANS3-5,
 //     PC_ROT3-5) and OMEGA_DOT, ACCELERATION are not read yet: an error unless they are 0. ID is
-//     ignored (ids follow the order of the file).
+//     ignored (granulab numbers the PARTICLEs first, then the blocks' grains).
 //   GENERATE_BLOCK k -> a [[shape]] "block<k>" (kind "grain": PART_SIZE semi-axes 1 1, as the
 //     spec's erratum 26 keeps them, PART_VAR_SIZE 0.5, RANDOM_SIZE, PART_NUM_CORNERS 6,
 //     PART_VAR_CORNERS 2, RANDOM_NUM_CORNERS, PART_RANDOM_POS_CORNERS REGULAR, PART_ROT with its
