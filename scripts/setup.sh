@@ -10,7 +10,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake ninja-build pkg-config git libgtest-dev libgmock-dev libbenchmark-dev
-          libtomlplusplus-dev libcli11-dev libfmt-dev nlohmann-json3-dev libcairo2-dev libvtk9-dev clang-format
+          libtomlplusplus-dev libcli11-dev libfmt-dev nlohmann-json3-dev libcairo2-dev libvtk9-dev zlib1g-dev clang-format
           python3-matplotlib python3-numpy openfoam libopenmpi-dev openmpi-bin)
 missing=()
 for p in "${packages[@]}"; do

@@ -3,6 +3,7 @@
 #include "io/gsi_scene.hpp"
 
 #include <fmt/format.h>
+#include <zlib.h>
 
 #include <algorithm>
 #include <cctype>
@@ -10,6 +11,7 @@
 #include <cstring>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 
 namespace granulab::io {
 
@@ -17,6 +19,10 @@ namespace {
 
 constexpr Real kGc2dInfinity = 4294967295.0;  ///< gc2d's BIG_NUMBER, 2^32 - 1 (gstd.h)
 constexpr Real kArealDensity = 5000;          ///< [kg/m^2] the thesis's grains (spec 3.9)
+
+bool endsWith(const std::string& s, std::string_view tail) {
+    return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
 
 std::string lower(std::string s) {
     std::transform(s.begin(), s.end(), s.begin(),
@@ -348,7 +354,8 @@ private:
 }  // namespace
 
 bool isGsiPath(const std::string& path) {
-    return path.size() >= 4 && lower(path.substr(path.size() - 4)) == ".gsi";
+    const std::string l = lower(path);
+    return endsWith(l, ".gsi") || endsWith(l, ".gsi.gz");
 }
 
 model::SceneDef gsiToScene(const GsiDocument& doc) {
@@ -356,13 +363,31 @@ model::SceneDef gsiToScene(const GsiDocument& doc) {
 }
 
 model::SceneDef readGsiFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        throw SceneError(
-            makeDiagnostic(path, 0, "", "cannot open the gsi scene file (missing or unreadable)"));
-    std::stringstream text;
-    text << in.rdbuf();
-    return gsiToScene(parseGsi(text.str(), path));
+    std::string text;
+    if (endsWith(lower(path), ".gz")) {  // gzip (gc2d: gunzip first); zlib reads it directly
+        gzFile in = gzopen(path.c_str(), "rb");
+        if (!in)
+            throw SceneError(
+                makeDiagnostic(path, 0, "", "cannot open the gsi scene file (missing or unreadable)"));
+        char buffer[1 << 16];
+        int n = 0;
+        while ((n = gzread(in, buffer, sizeof buffer)) > 0) text.append(buffer, static_cast<std::size_t>(n));
+        int code = Z_OK;
+        const std::string reason = n < 0 ? gzerror(in, &code) : "";
+        gzclose(in);
+        if (n < 0)
+            throw SceneError(
+                makeDiagnostic(path, 0, "", fmt::format("not a readable gzip file: {}", reason)));
+    } else {
+        std::ifstream in(path, std::ios::binary);
+        if (!in)
+            throw SceneError(
+                makeDiagnostic(path, 0, "", "cannot open the gsi scene file (missing or unreadable)"));
+        std::stringstream s;
+        s << in.rdbuf();
+        text = s.str();
+    }
+    return gsiToScene(parseGsi(text, path));
 }
 
 }  // namespace granulab::io

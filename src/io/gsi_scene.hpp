@@ -56,13 +56,14 @@
 
 namespace granulab::io {
 
-/// True for a path that names a gsi scene (ends in .gsi, any case).
+/// True for a path that names a gsi scene (ends in .gsi or .gsi.gz, any case).
 bool isGsiPath(const std::string& path);
 
 /// The scene of a parsed gsi document. Throws SceneError listing every problem (file:line).
 model::SceneDef gsiToScene(const GsiDocument& doc);
 
-/// Reads and maps a gsi file. Throws SceneError (a missing or unreadable file too).
+/// Reads and maps a gsi file; a .gz file is decompressed as it is read (gc2d: gunzip first).
+/// Throws SceneError (a missing, unreadable or damaged file too).
 model::SceneDef readGsiFile(const std::string& path);
 
 }  // namespace granulab::io

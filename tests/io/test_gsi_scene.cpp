@@ -1,8 +1,13 @@
 // SPDX-License-Identifier: MIT
 // gsi -> SceneDef (io/gsi_scene.hpp; gc2d spec 9.3): the thesis's sample and one keyword of each
 // kind of mapping, with gc2d's defaults and its clockwise angles turned.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "io/gsi_scene.hpp"
@@ -177,4 +182,32 @@ TEST(GsiScene, WhatIsNotReadIsAnError) {
     e = errorsOf("WALL\nOffset 1 0\n");
     EXPECT_NE(e.find("s.gsi:3"), std::string::npos) << e;
     EXPECT_NE(e.find("a WALL needs CORNERS"), std::string::npos) << e;
+}
+
+TEST(GsiScene, CompressedFileIsReadAsIs) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / fmt::format("granulab_gsi_gz_{}", ::getpid());
+    fs::create_directories(dir);
+    const fs::path plain = dir / "scene.gsi";
+    {
+        std::ofstream out(plain);
+        out << "PARAMETER v1.4\n\nDelta_T 2e-5\nWALL\n" << kSquare;
+    }
+    ASSERT_EQ(std::system(("gzip -kf " + plain.string()).c_str()), 0);  // scene.gsi.gz beside it
+    EXPECT_TRUE(granulab::io::isGsiPath((dir / "scene.gsi.gz").string()));
+    EXPECT_TRUE(granulab::io::isGsiPath("A.GSI"));
+    EXPECT_FALSE(granulab::io::isGsiPath("scene.gsi.toml"));
+    const SceneDef s = granulab::io::readGsiFile((dir / "scene.gsi.gz").string());
+    EXPECT_DOUBLE_EQ(s.dem.dt, 2e-5);
+    ASSERT_EQ(s.walls.size(), 1u);
+    EXPECT_EQ(s.walls[0].loc.file, (dir / "scene.gsi.gz").string());
+    EXPECT_EQ(s.walls[0].loc.line, 5);
+    // A damaged file: an error naming it, exit status 2 for the run.
+    {
+        std::ofstream out(dir / "bad.gsi.gz", std::ios::binary);
+        out << "\x1f\x8b\x08\x00garbage";
+    }
+    EXPECT_THROW(granulab::io::readGsiFile((dir / "bad.gsi.gz").string()), SceneError);
+    EXPECT_THROW(granulab::io::readGsiFile((dir / "missing.gsi").string()), SceneError);
+    fs::remove_all(dir);
 }
