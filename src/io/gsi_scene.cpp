@@ -172,6 +172,12 @@ private:
             if (h.t1 >= kGc2dInfinity) h.t1 = 1e300;
             if (h.t2 >= kGc2dInfinity) h.t2 = 1e300;
         }
+        for (const char* key : {"STEPS_DATA", "STEPS_CHECKPOINT", "STEPS_SETUP", "STEPS_DUMPLINE"})
+            if (const GsiEntry* e = g.entry(key); e && !(e->numbers[0] >= 1))
+                m_diags.error(
+                    e->loc, key,
+                    fmt::format("{} is a number of steps, at least 1 (2^32 - 1 or more: never); got {}", key,
+                                e->numbers[0]));
         auto& out = m_scene.output;
         out.loc = g.loc("STEPS_DATA");
         out.seriesInterval = stepsInterval(g.number("STEPS_DATA", 10000), dem.dt);

@@ -179,6 +179,10 @@ TEST(GsiScene, WhatIsNotReadIsAnError) {
     EXPECT_NE(e.find("s.gsi:10"), std::string::npos) << e;
     EXPECT_NE(e.find("PC_TRANS3"), std::string::npos) << e;
     EXPECT_EQ(errorsOf(std::string("PARTICLE\n") + kSquare + "PC_Trans3 0 0\n"), "");
+    e = errorsOf("Steps_Data 0\nSteps_Checkpoint -5\n");
+    EXPECT_NE(e.find("s.gsi:3: STEPS_DATA: STEPS_DATA is a number of steps, at least 1"), std::string::npos)
+        << e;
+    EXPECT_NE(e.find("s.gsi:4"), std::string::npos) << e;
     e = errorsOf("WALL\nOffset 1 0\n");
     EXPECT_NE(e.find("s.gsi:3"), std::string::npos) << e;
     EXPECT_NE(e.find("a WALL needs CORNERS"), std::string::npos) << e;
