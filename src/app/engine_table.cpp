@@ -59,6 +59,7 @@ model::SceneDef readScene(const std::string& path, const std::vector<io::Overrid
 
 model::SceneDef readSceneText(const std::string& text, const std::string& path,
                               const std::vector<io::Override>& overrides) {
+    if (io::isGsiPath(path)) return withOverrides(io::gsiToScene(io::parseGsi(text, path)), overrides);
     return io::readSceneText(text, path, overrides, sceneSections());
 }
 

@@ -48,7 +48,8 @@ std::string engineNamesText();
 std::vector<io::SceneSections> sceneSections();
 
 /// Reads a scene file with the sections of every engine in the table; SceneError lists every
-/// problem. readSceneText: the same from a string (`path` only names it in messages).
+/// problem. readSceneText: the same from a string (`path` names it in messages, and a path ending
+/// in .gsi or .gsi.gz makes the text gc2d's gsi).
 model::SceneDef readScene(const std::string& path, const std::vector<io::Override>& overrides);
 model::SceneDef readSceneText(const std::string& text, const std::string& path,
                               const std::vector<io::Override>& overrides = {});

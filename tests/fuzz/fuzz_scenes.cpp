@@ -36,17 +36,17 @@ std::string readFile(const std::string& path) {
     return s.str();
 }
 
-/// Default seeds: every examples/**/*.toml and tests/**/*.toml except the regression corpus
-/// (replayed by its own tests) and the benchmark-size scenes (examples/bench/ and the 477,000
-/// spheres of examples/edmd/clustering_3d.toml: seconds to minutes each before the first step,
-/// with the same keys as the other examples).
+/// Default seeds: every examples/**/*.toml and *.gsi and tests/**/*.toml and *.gsi except the regression
+/// corpus (replayed by its own tests) and the benchmark-size scenes (examples/bench/ and the 477,000 spheres
+/// of examples/edmd/clustering_3d.toml: seconds to minutes each before the first step, with the same keys as
+/// the other examples).
 std::vector<std::string> defaultSeeds() {
     std::vector<std::string> paths;
     for (const char* dir : {"examples", "tests"}) {
         const fs::path root = fs::path(GRANULAB_SOURCE_DIR) / dir;
         for (const auto& entry : fs::recursive_directory_iterator(root)) {
             const std::string p = entry.path().string();
-            if (entry.path().extension() != ".toml") continue;
+            if (entry.path().extension() != ".toml" && entry.path().extension() != ".gsi") continue;
             if (p.find("/fuzz/corpus/") != std::string::npos ||
                 p.find("/examples/bench/") != std::string::npos ||
                 p.find("/clustering_3d.toml") != std::string::npos)
@@ -89,7 +89,9 @@ int fuzzLoop(const std::vector<Seed>& seeds, double seconds, std::uint64_t seed,
         const std::string text = mutator.mutate(from.text, rng);
         const std::string origin = fmt::format("mutant {} of seed {} from {}", c.mutants, seed, from.path);
         fuzz::beginInput(text, findings, origin);
-        const fuzz::RunResult r = fuzz::runScene(text, "mutant.toml", limits);
+        // The seed's language: a gsi mutant is read as gsi (app::readSceneText goes by the name).
+        const fuzz::RunResult r =
+            fuzz::runScene(text, "mutant" + fs::path(from.path).extension().string(), limits);
         fuzz::endInput();
         ++c.mutants;
         switch (r.outcome) {
@@ -145,7 +147,7 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1u, 3600u));
     cli.add_option("--run-seconds", limits.runSeconds, "CPU time of the bounded advance per input [s]");
     cli.add_option("--max-particles", limits.maxParticles, "larger scenes are built but not run");
-    cli.add_option("--seeds", seedFiles, "seed scenes (default: examples/ and tests/ *.toml)");
+    cli.add_option("--seeds", seedFiles, "seed scenes (default: examples/ and tests/ *.toml and *.gsi)");
     cli.add_option("--replay", replayFiles, "run these files once each and report their outcomes");
     cli.add_flag("--verbose", verbose, "leave the engines' stdout and stderr on the terminal");
     CLI11_PARSE(cli, argc, argv);
