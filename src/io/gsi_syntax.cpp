@@ -230,7 +230,7 @@ public:
         header();
         GsiObject general;
         general.kind = GsiObjectKind::General;
-        general.loc = loc(3);
+        general.loc = loc(2);  // line 3: the first after the identification
         m_doc.objects.push_back(std::move(general));
         for (m_next = 2; m_next < m_lines.size();) {
             const std::size_t index = m_next++;

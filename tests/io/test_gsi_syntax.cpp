@@ -96,6 +96,7 @@ TEST(GsiSyntax, CaseMissingParametersTrailingTextAndComments) {
                                        "anything at all, never read\n",
                                    "x.gsi");
     EXPECT_EQ(d.echoes, (std::vector<std::string>{"echoed to the screen"}));
+    EXPECT_EQ(d.general().loc.line, 3);  // GENERAL starts after the identification line
     const auto& g = d.general();
     EXPECT_DOUBLE_EQ(g.find("DELTA_T")->numbers[0], 2e-5);
     EXPECT_EQ(g.find("TIME")->numbers, (std::vector<double>{0, 0}));
