@@ -146,7 +146,8 @@ private:
         const GsiEntry* gravity = g.entry("G");
         const Real g1 = gravity ? gravity->numbers[0] : 9.81;
         dem.gravity = {0, -g1};
-        if (gravity && gravity->given == 2) {  // variable g (spec 6.6)
+        if (gravity && gravity->given == 2) {  // variable g (spec 6.6): the schedule alone sets it
+            dem.gravity = {0, 0};
             auto& v = m_scene.machines.gravity;
             v.present = true;
             v.loc = gravity->loc;

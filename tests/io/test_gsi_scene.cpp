@@ -119,6 +119,7 @@ TEST(GsiScene, VariableGravityAndHeating) {
     EXPECT_EQ(g.type, "smooth_step");
     EXPECT_DOUBLE_EQ(g.steps, 4);
     EXPECT_DOUBLE_EQ(g.ramp, 0.25);
+    EXPECT_DOUBLE_EQ(s.dem.gravity.y, 0);  // the schedule alone (the engine refuses both)
     ASSERT_TRUE(s.machines.sizeScaling.present);
     EXPECT_DOUBLE_EQ(s.machines.sizeScaling.t2, 2);
     EXPECT_DOUBLE_EQ(s.machines.sizeScaling.amplitude, 0.01);
