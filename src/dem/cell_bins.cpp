@@ -52,7 +52,7 @@ void CellBins::build(const model::ParticleStore& s, Real h) {
     // Sparse: sort (key, slot) pairs; the slot breaks ties, so the order is deterministic.
     m_scratch.resize(n);
     for (std::size_t i = 0; i < n; ++i)
-        m_scratch[i] = {keyOf(ixOf(i), iyOf(i)), static_cast<std::uint32_t>(i)};
+        m_scratch[i] = {cellKey(s.x[i], s.y[i], x0, y0, h), static_cast<std::uint32_t>(i)};
     std::sort(m_scratch.begin(), m_scratch.end());
     m_keys.clear();
     m_cellX.clear();
@@ -69,6 +69,10 @@ void CellBins::build(const model::ParticleStore& s, Real h) {
         m_members[k] = m_scratch[k].second;
     }
     m_start.push_back(static_cast<std::uint32_t>(n));
+}
+
+std::uint64_t CellBins::cellKey(Real x, Real y, Real x0, Real y0, Real h) noexcept {
+    return keyOf(clampIndex(std::floor((x - x0) / h)), clampIndex(std::floor((y - y0) / h)));
 }
 
 std::size_t CellBins::find(std::int64_t ix, std::int64_t iy) const noexcept {

@@ -29,6 +29,11 @@ public:
     /// The cell (ix, iy), or cellCount() if no particle is in it.
     std::size_t find(std::int64_t ix, std::int64_t iy) const noexcept;
 
+    /// Key of the cell holding (x, y) [m] in a grid of edge h [m] laid from (x0, y0): the indices
+    /// as build() makes them (clamped to [0, 2^31 - 1]), iy in the high word. Keys sort by row,
+    /// then column.
+    static std::uint64_t cellKey(Real x, Real y, Real x0, Real y0, Real h) noexcept;
+
 private:
     bool m_dense = true;
     std::int64_t m_nx = 0, m_ny = 0;

@@ -15,6 +15,16 @@ namespace {
 
 constexpr Real kMinVoidage = 0.1;  ///< floor of the voidage (Di Felice's factor diverges at 0)
 
+/// The voidage cells' edge h [m] and slab depth [m] (docs/physics/fluid.md, Eq. F15): the
+/// configured ones, else max(node spacing, 8 R_max) and 2 R_max.
+struct VoidageGeometry {
+    Real h, depth;
+};
+VoidageGeometry voidageGeometry(const FluidForceConfig& c, Real spacing, Real rmax) noexcept {
+    return {c.voidageCell > 0 ? c.voidageCell : std::max(spacing, 8 * rmax),
+            c.depth > 0 ? c.depth : 2 * rmax};
+}
+
 /// Voidage at each particle from the particle volume per square cell of edge h in a slab of
 /// thickness `depth`: eps = 1 - V_solid / (h^2 depth), at least kMinVoidage.
 void voidages(const model::ParticleStore& s, Real h, Real depth, VoidageScratch& scratch,
@@ -35,7 +45,7 @@ void voidages(const model::ParticleStore& s, Real h, Real depth, VoidageScratch&
 /// (laid from the lower-left corner of every rank's owned particles), each holding the volume of
 /// every rank's owned particles whose centre lies in it, summed in slot order per rank and then
 /// in rank order. R_max for the default cell and slab is the largest radius on any rank.
-void voidagesOnRanks(const model::ParticleStore& s, const FieldRanks& ranks, Real voidageCell, Real depthIn,
+void voidagesOnRanks(const model::ParticleStore& s, const FieldRanks& ranks, const FluidForceConfig& c,
                      Real spacing, VoidageScratch& scratch, std::vector<Real>& out) {
     const std::size_t owned = std::min(ranks.owned, s.size());
     double box[3] = {1e300, 1e300, 1e300};  // min x, min y, -R_max over the owned particles
@@ -45,16 +55,9 @@ void voidagesOnRanks(const model::ParticleStore& s, const FieldRanks& ranks, Rea
         box[2] = std::min(box[2], -s.radius[i]);
     }
     ranks.comm->allMin(box);
-    const Real x0 = box[0], y0 = box[1], rmax = -box[2];
-    const Real depth = depthIn > 0 ? depthIn : 2 * rmax;
-    const Real h = voidageCell > 0 ? voidageCell : std::max(spacing, 8 * rmax);
-    // Cell keys as CellBins::build makes them (indices from the lower-left corner, clamped).
-    constexpr Real kMaxIndex = static_cast<Real>((std::int64_t{1} << 31) - 1);
-    const auto index = [&](Real v, Real v0) {
-        const Real f = std::floor((v - v0) / h);
-        return f <= 0 ? std::uint64_t{0} : static_cast<std::uint64_t>(f >= kMaxIndex ? kMaxIndex : f);
-    };
-    const auto keyOf = [&](std::size_t i) { return (index(s.y[i], y0) << 32) | index(s.x[i], x0); };
+    const Real x0 = box[0], y0 = box[1];
+    const auto [h, depth] = voidageGeometry(c, spacing, -box[2]);
+    const auto keyOf = [&](std::size_t i) { return CellBins::cellKey(s.x[i], s.y[i], x0, y0, h); };
     auto& keyed = scratch.keyed;
     keyed.resize(owned);
     for (std::size_t i = 0; i < owned; ++i) keyed[i] = {keyOf(i), static_cast<std::uint32_t>(i)};
@@ -146,7 +149,7 @@ void addFluidForces(model::ParticleStore& s, const fluid::FieldSeries& field, co
     const std::size_t count = ranks.comm ? std::min(ranks.owned, s.size()) : s.size();
     if (ranks.comm && fluid::needsVoidage(c.drag)) {  // a collective: even a rank without particles
         eps.resize(s.size());
-        voidagesOnRanks(s, ranks, c.voidageCell, c.depth, field.first().spacing(), scratch, eps);
+        voidagesOnRanks(s, ranks, c, field.first().spacing(), scratch, eps);
         voidage = &eps;
         if (count)
             stats.minVoidage =
@@ -156,8 +159,7 @@ void addFluidForces(model::ParticleStore& s, const fluid::FieldSeries& field, co
     if (!voidage && fluid::needsVoidage(c.drag)) {
         Real rmax = 0;
         for (const Real r : s.radius) rmax = std::max(rmax, r);
-        const Real depth = c.depth > 0 ? c.depth : 2 * rmax;
-        const Real h = c.voidageCell > 0 ? c.voidageCell : std::max(field.first().spacing(), 8 * rmax);
+        const auto [h, depth] = voidageGeometry(c, field.first().spacing(), rmax);
         eps.resize(s.size());
         voidages(s, h, depth, scratch, eps);
         voidage = &eps;

@@ -11,7 +11,6 @@
 #include <cstring>
 #include <fstream>
 #include <sstream>
-#include <string_view>
 
 namespace granulab::io {
 
@@ -19,10 +18,6 @@ namespace {
 
 constexpr Real kGc2dInfinity = 4294967295.0;  ///< gc2d's BIG_NUMBER, 2^32 - 1 (gstd.h)
 constexpr Real kArealDensity = 5000;          ///< [kg/m^2] the thesis's grains (spec 3.9)
-
-bool endsWith(const std::string& s, std::string_view tail) {
-    return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
-}
 
 std::string lower(std::string s) {
     std::transform(s.begin(), s.end(), s.begin(),
@@ -362,7 +357,7 @@ private:
 
 bool isGsiPath(const std::string& path) {
     const std::string l = lower(path);
-    return endsWith(l, ".gsi") || endsWith(l, ".gsi.gz");
+    return l.ends_with(".gsi") || l.ends_with(".gsi.gz");
 }
 
 model::SceneDef gsiToScene(const GsiDocument& doc) {
@@ -371,7 +366,7 @@ model::SceneDef gsiToScene(const GsiDocument& doc) {
 
 model::SceneDef readGsiFile(const std::string& path) {
     std::string text;
-    if (endsWith(lower(path), ".gz")) {  // gzip (gc2d: gunzip first); zlib reads it directly
+    if (lower(path).ends_with(".gz")) {  // gzip (gc2d: gunzip first); zlib reads it directly
         gzFile in = gzopen(path.c_str(), "rb");
         if (!in)
             throw SceneError(
