@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -32,6 +31,12 @@ public:
 
     const GsiEntry* entry(std::string_view key) const noexcept { return m_object.find(key); }
     bool has(std::string_view key) const noexcept { return entry(key) != nullptr; }
+    /// The first entry (file order) of a keyword family such as "VIB_", or nullptr.
+    const GsiEntry* firstOf(std::string_view prefix) const noexcept {
+        for (const GsiEntry& e : m_object.entries)
+            if (e.keyword.starts_with(prefix)) return &e;
+        return nullptr;
+    }
     Real number(std::string_view key, Real fallback, std::size_t k = 0) const {
         const GsiEntry* e = entry(key);
         return e && k < e->numbers.size() ? e->numbers[k] : fallback;
@@ -156,10 +161,10 @@ private:
             v.tilt1 = v.t1;
             v.tilt2 = v.t2;
         }
-        if (g.has("HEAT_TIME") || g.has("HEAT_AMPLITUDE") || g.has("HEAT_FREQUENCE") || g.has("HEAT_SLOPE")) {
+        if (const GsiEntry* heat = g.firstOf("HEAT_")) {
             auto& h = m_scene.machines.sizeScaling;
             h.present = true;
-            h.loc = g.loc(g.has("HEAT_TIME") ? "HEAT_TIME" : "HEAT_AMPLITUDE");
+            h.loc = g.has("HEAT_TIME") ? g.loc("HEAT_TIME") : heat->loc;
             h.amplitude = g.number("HEAT_AMPLITUDE", 0.01);
             h.frequency = g.number("HEAT_FREQUENCE", 1.0);
             h.slope = g.number("HEAT_SLOPE", 10.0);
@@ -233,8 +238,7 @@ private:
             w.pistonDirection = r.number("PISTON_ANGLE", 0);
             w.pistonMaxSpeed = r.number("PISTON_V_MAX", 1);
         }
-        if (r.has("VIB_TYPE") || r.has("VIB_ANGLE") || r.has("VIB_TIME") || r.has("VIB_WIDTH") ||
-            r.has("VIB_FREQUENCE")) {
+        if (r.firstOf("VIB_")) {
             const std::string type = r.choice("VIB_TYPE", "cosinus");
             w.vibType = type == "cosinus" ? "cosine" : type;  // sawtooth, tapping, triangle alike
             w.vibDirection = r.number("VIB_ANGLE", kPi / 2);
@@ -273,8 +277,7 @@ private:
         p.loc = r.object().loc;
         m_scene.shapes.push_back(std::move(shape));
         m_scene.particles.push_back(std::move(p));
-        if (r.has("DRAG_K") || r.has("DRAG_ANGLE") || r.has("DRAG_VELOCITY") || r.has("DRAG_TIME") ||
-            r.has("DRAG_FIXING_POINT") || r.has("DRAG_PULLING_POINT")) {
+        if (r.firstOf("DRAG_")) {
             model::SpringDef s;
             s.particle = index;  // [[particle]]s come first in generation order
             s.stiffness = r.number("DRAG_K", 100);
