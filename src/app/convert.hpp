@@ -13,14 +13,16 @@
 namespace granulab::app {
 
 struct ConvertOptions {
-    std::string dir;         ///< the folder of the three files
-    std::string out;         ///< the TOML scene to write
+    std::string dir;         ///< the input: a cfddem folder of the three files, a .gsi or a .toml scene
+    std::string out;         ///< the scene to write: .toml (from a folder or gsi) or .gsi (from TOML)
     bool overwrite = false;  ///< replace an existing file
     bool quiet = false;
 };
 
-/// Writes the native TOML scene of options.dir to options.out (refused when it exists, unless
-/// overwrite). Bad input throws SceneError (exit status 2). Returns the exit status.
+/// Writes options.dir as options.out (refused when it exists, unless overwrite): a cfddem folder or
+/// a gsi scene as native TOML (io/scene_toml_writer.hpp), a TOML scene as gsi (io/gsi_writer.hpp;
+/// only scenes made of gc2d's elements). Bad input or a scene gsi cannot express throws
+/// SceneError (exit status 2). Returns the exit status.
 int convertCommand(const ConvertOptions& options);
 
 /// True when the scene path `path` names a folder meant as cfddem input: it holds at least one of

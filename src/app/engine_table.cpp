@@ -12,6 +12,7 @@
 #include "io/dem_sections.hpp"
 #include "io/edmd_sections.hpp"
 #include "io/gsi_scene.hpp"
+#include "io/gsi_script.hpp"
 
 namespace granulab::app {
 
@@ -50,10 +51,26 @@ std::vector<io::SceneSections> sceneSections() {
     return list;
 }
 
+namespace {
+ScriptPolicy& scriptPolicy() {
+    static ScriptPolicy policy;
+    return policy;
+}
+}  // namespace
+
+void setScriptPolicy(ScriptPolicy policy) {
+    scriptPolicy() = std::move(policy);
+}
+
 model::SceneDef readScene(const std::string& path, const std::vector<io::Override>& overrides) {
     // A folder of the cfddem seed's input files (conditions.txt, boundary.txt, startvalue.txt).
     if (isCfddemInput(path)) return readCfddemScene(path, overrides);
     if (io::isGsiPath(path)) return readGsiScene(path, overrides);  // gc2d's scene language
+    if (io::isGsiScript(path)) {  // a gsi generator (gc2d's .gsi.pl), only when allowed
+        model::SceneDef scene = io::readGsiScript(path, scriptPolicy().args, scriptPolicy().allowed);
+        scene.path = path;
+        return withOverrides(std::move(scene), overrides);
+    }
     return io::readScene(path, overrides, sceneSections());
 }
 

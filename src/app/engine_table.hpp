@@ -47,9 +47,18 @@ std::string engineNamesText();
 /// The scene-section readers of every engine in the table, in table order.
 std::vector<io::SceneSections> sceneSections();
 
+/// Generator scripts as scenes (io/gsi_script.hpp): whether they may run (--allow-script) and
+/// their arguments (-P). Set once by main before any scene is read.
+struct ScriptPolicy {
+    bool allowed = false;
+    std::vector<std::string> args;
+};
+void setScriptPolicy(ScriptPolicy policy);
+
 /// Reads a scene file with the sections of every engine in the table; SceneError lists every
 /// problem. readSceneText: the same from a string (`path` names it in messages, and a path ending
-/// in .gsi or .gsi.gz makes the text gc2d's gsi).
+/// in .gsi or .gsi.gz makes the text gc2d's gsi). A generator script (io/gsi_script.hpp) runs
+/// under the ScriptPolicy.
 model::SceneDef readScene(const std::string& path, const std::vector<io::Override>& overrides);
 model::SceneDef readSceneText(const std::string& text, const std::string& path,
                               const std::vector<io::Override>& overrides = {});

@@ -11,11 +11,13 @@
 
 #include "app/analyze.hpp"
 #include "app/convert.hpp"
+#include "app/engine_table.hpp"
 #include "app/info.hpp"
 #include "app/render.hpp"
 #include "app/run.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
+#include "io/gsi_script.hpp"
 #ifdef GRANULAB_HAVE_MPI
 #include "core/communicator.hpp"
 #include "mpi/mpi_communicator.hpp"
@@ -37,17 +39,37 @@ int main(int argc, char** argv) {
     app::RunOptions runOpt;
     std::vector<std::string> sets;
     auto* run = cli.add_subcommand("run", "run a scene");
-    run->add_option("scene", runOpt.scene, "scene file (.toml), or a folder of the cfddem seed's input files")
-        ->required();
+    run->add_option(
+        "scene", runOpt.scene,
+        "scene file (.toml, gc2d's .gsi / .gsi.gz, or a generator script with --allow-script), or "
+        "a folder of the cfddem seed's input files");
+    std::string gc2dInput;
+    run->add_option("-i", gc2dInput,
+                    "the scene, as gc2d's -i names its input (instead of the positional scene)");
+    bool verbose = false;
+    run->add_flag("--verbose,-v", verbose,
+                  "describe the scene (as granulab info) before the run (gc2d's -v)");
+    bool allowScript = false;
+    std::string scriptArgs;
+    const auto scriptOptions = [&](CLI::App* sub) {
+        sub->add_flag(
+            "--allow-script", allowScript,
+            "run a generator script scene (.gsi.pl, .gsi.py, an executable) and read its output as gsi");
+        sub->add_option("-P", scriptArgs, "arguments of the generator script, as one string (gc2d's -P)");
+    };
+    scriptOptions(run);
     run->add_option("--out", runOpt.outDir, "output folder (default out/<scene name>)");
     run->add_option("--set", sets, "override a scene key: --set dem.dt=1e-5 (repeatable)")->take_all();
     run->add_option("--resume", runOpt.resumeDir, "continue from DIR/checkpoint.bin (appends to DIR)");
     run->add_flag("--overwrite", runOpt.overwrite,
                   "remove an earlier run's outputs from the output folder first (granulab's files only)");
+    run->add_flag(
+        "--ignore-lock,-l", runOpt.ignoreLock,
+        "output.gc2d: run although the output folder holds the lock file <basename>.glk (gc2d's -l)");
     run->add_flag("--quiet,-q", runOpt.quiet, "no progress output");
     std::string threads;
     run->add_option(
-        "--threads", threads,
+        "--threads,-t", threads,
         "threads of the DEM step (0: every core); the same as --set run.threads=N, which it overrides");
     run->footer(
         "example: granulab run examples/disks_in_box.toml --set run.end_time=0.05 --out runs/short\n"
@@ -59,21 +81,27 @@ int main(int argc, char** argv) {
     info->add_option("scene", infoScene, "scene file, or a folder of the cfddem seed's input files")
         ->required();
     info->add_option("--set", sets, "override a scene key")->take_all();
+    scriptOptions(info);
     info->footer("example: granulab info examples/disks_in_box.toml --set dem.dt=2e-5");
 
     app::ConvertOptions convertOpt;
     auto* convert = cli.add_subcommand(
         "convert",
-        "write the native TOML scene of the cfddem seed's input files (conditions.txt, boundary.txt, "
-        "startvalue.txt)");
+        "convert a scene: the cfddem seed's input files (a folder of conditions.txt, boundary.txt, "
+        "startvalue.txt) or a gc2d gsi file to native TOML, or a TOML scene to gsi");
     convert
-        ->add_option("dir", convertOpt.dir, "folder holding conditions.txt, boundary.txt, startvalue(s).txt")
+        ->add_option("input", convertOpt.dir,
+                     "a folder holding conditions.txt, boundary.txt, startvalue(s).txt; a .gsi (.gsi.gz) "
+                     "scene; or a .toml scene")
         ->required();
-    convert->add_option("scene", convertOpt.out, "TOML scene file to write")->required();
+    convert->add_option("output", convertOpt.out, "scene file to write: .toml, or .gsi from a .toml")
+        ->required();
     convert->add_flag("--overwrite", convertOpt.overwrite, "replace an existing scene file");
+    scriptOptions(convert);
     convert->add_flag("--quiet,-q", convertOpt.quiet, "no message");
     convert->footer(
         "example: granulab convert examples/cfddem_trio trio.toml && granulab run trio.toml\n"
+        "         granulab convert examples/gc2d/piston.gsi piston.toml\n"
         "(granulab run DIR and granulab info DIR read such a folder directly)");
 
     app::RenderOptions renderOpt;
@@ -191,9 +219,21 @@ int main(int argc, char** argv) {
     try {
         std::vector<io::Override> overrides;
         for (const auto& s : sets) overrides.push_back(io::parseOverride(s));
+        app::setScriptPolicy({allowScript, io::splitScriptArgs(scriptArgs)});
         if (*run) {
+            if (runOpt.scene.empty()) runOpt.scene = gc2dInput;
+            if (runOpt.scene.empty() || (!gc2dInput.empty() && gc2dInput != runOpt.scene)) {
+                fmt::print(
+                    stderr,
+                    "granulab run: name one scene, as `granulab run SCENE` or `granulab run -i SCENE`\n");
+                return app::kExitBadInput;
+            }
             if (!threads.empty()) overrides.push_back(io::parseOverride("run.threads=" + threads));
             runOpt.overrides = overrides;
+            if (verbose && !runOpt.quiet) {
+                const int described = app::infoCommand(runOpt.scene, overrides);
+                if (described != app::kExitOk) return described;
+            }
             return app::runCommand(runOpt);
         }
         if (*info) return app::infoCommand(infoScene, overrides);

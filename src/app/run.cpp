@@ -1,13 +1,16 @@
 // SPDX-License-Identifier: MIT
 // `granulab run` (app/run.hpp): scene -> engine table -> Simulation -> run loop. The output
 // folder belongs to one run: a fresh run into a folder with another run's outputs is refused
-// unless --overwrite removes them first (io/output_folder.hpp); --resume appends.
+// unless --overwrite removes them first (io/output_folder.hpp); --resume appends. With
+// output.gc2d the folder is locked by <basename>.glk (gc2d spec 9.1), which --ignore-lock passes.
 #include "app/run.hpp"
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <filesystem>
+#include <fstream>
 #include <system_error>
 
 #include "app/engine_table.hpp"
@@ -16,6 +19,7 @@
 #include "core/communicator.hpp"
 #include "core/error.hpp"
 #include "core/timer.hpp"
+#include "io/gc2d_outputs.hpp"
 #include "io/output_folder.hpp"
 #include "io/scene_override.hpp"
 
@@ -48,16 +52,46 @@ bool sameFolder(const std::string& a, const std::string& b) {
     return fs::weakly_canonical(a, ec) == fs::weakly_canonical(b, ec);
 }
 
+bool resumesHere(const RunOptions& opt, const std::string& dir) {
+    return !opt.resumeDir.empty() && sameFolder(opt.resumeDir, dir);
+}
+
+/// gc2d's lock (spec 9.1; output.gc2d): the name of the lock file in the output folder, or ""
+/// when the scene writes no gc2d files.
+std::string gc2dLockName(const model::SceneDef& scene) {
+    return scene.output.gc2d.enabled ? io::gc2dFileName(scene.output.gc2d.basename, "glk") : "";
+}
+
+/// Refuses a folder holding the lock of an earlier gc2d-style run unless --ignore-lock (gc2d's -l)
+/// or --overwrite (which removes the earlier run's files, the lock among them); a run resumed into
+/// its own folder continues under its own lock.
+void checkGc2dLock(const RunOptions& opt, const std::string& dir, const std::string& lock) {
+    if (lock.empty() || opt.ignoreLock || opt.overwrite || resumesHere(opt, dir)) return;
+    const fs::path path = fs::path(dir) / lock;
+    std::error_code ec;
+    if (!fs::exists(path, ec)) return;
+    throw SceneError(makeDiagnostic(
+        dir, 0, "",
+        fmt::format(
+            "holds the lock file {} of a run with gc2d's files (output.gc2d), whose results would "
+            "be overwritten (gc2d spec 9.1); pass --overwrite to replace that run's files, --ignore-lock "
+            "(-l) to run anyway, --resume {} to continue that run, or choose another --out",
+            lock, shellWord(dir))));
+}
+
 /// A fresh run (or a resume written elsewhere) must not mix its files with another run's.
-void claimOutputFolder(const RunOptions& opt, const std::string& dir) {
-    if (!opt.resumeDir.empty() && sameFolder(opt.resumeDir, dir)) {  // resume appends
+/// `ownLock`: the gc2d lock file this run takes over (--ignore-lock), not counted as an output.
+void claimOutputFolder(const RunOptions& opt, const std::string& dir, const std::string& ownLock) {
+    if (resumesHere(opt, dir)) {  // resume appends
         if (opt.overwrite)
             throw SceneError(makeDiagnostic(dir, 0, "--overwrite",
                                             "would remove the checkpoint that --resume continues; "
                                             "resume without --overwrite, or write to another --out"));
         return;
     }
-    const auto outputs = io::runOutputsIn(dir);
+    auto outputs = io::runOutputsIn(dir);
+    if (!ownLock.empty() && opt.ignoreLock)
+        outputs.erase(std::remove(outputs.begin(), outputs.end(), ownLock), outputs.end());
     if (outputs.empty()) return;
     if (opt.overwrite) {
         io::removeRunOutputs(dir);
@@ -112,8 +146,16 @@ int runCommand(const RunOptions& opt) {
     std::vector<Diagnostic> refusal;
     if (comm.root()) {
         try {
-            claimOutputFolder(opt, dir);
+            const std::string lock = gc2dLockName(scene);
+            checkGc2dLock(opt, dir, lock);  // before the folder check: its own message
+            claimOutputFolder(opt, dir, lock);
             fs::create_directories(dir);
+            if (!lock.empty()) {  // before the first file of the run is written
+                std::ofstream created(fs::path(dir) / lock, std::ios::app);
+                if (!created)
+                    throw SceneError(makeDiagnostic(dir, 0, "output.gc2d",
+                                                    fmt::format("cannot create the lock file {}", lock)));
+            }
         } catch (const SceneError& e) {
             refusal = e.diagnostics();
         }

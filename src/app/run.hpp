@@ -2,7 +2,8 @@
 // `granulab run`: reads a scene, builds the engine of its run.engine through the engine table
 // and runs it in the one run loop (app/run_loop.hpp); writes the outputs of the user contract
 // (DESIGN.md), checkpoints and resumes. Refuses (SceneError, exit 2) an output folder that holds
-// another run's outputs unless `overwrite`; SIGINT/SIGTERM stop it cleanly (exit 130/143).
+// another run's outputs unless `overwrite`, and with output.gc2d one that holds the lock
+// <basename>.glk unless `ignoreLock` (gc2d spec 9.1); SIGINT/SIGTERM stop it cleanly (exit 130/143).
 #pragma once
 #include <string>
 #include <vector>
@@ -18,6 +19,8 @@ struct RunOptions {
     std::vector<io::Override> overrides;
     std::string resumeDir;   ///< continue from resumeDir/checkpoint.bin
     bool overwrite = false;  ///< remove an earlier run's outputs from the output folder first
+    /// output.gc2d: run although the folder holds the lock <basename>.glk (gc2d's -l, spec 9.6)
+    bool ignoreLock = false;
     bool quiet = false;
 };
 

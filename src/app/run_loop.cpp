@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 // The run loop (app/run_loop.hpp). A stop is the earliest point of every exact schedule; at a
-// stop each due output fires once, in the order series row, snapshot, checkpoint (series.csv is
-// flushed before a checkpoint, so a resumed run finds every row up to it). The end of the run
-// fires all three. Polled schedules fire at the first stop at or after their point.
+// stop each due output fires once, in the order series row, snapshot, engine line
+// (RunPlan::lines), checkpoint (series.csv is flushed before a checkpoint, so a resumed run finds
+// every row up to it). The end of the run fires the series row, the snapshot and the checkpoint;
+// the engine lines keep to their own schedule. Polled schedules fire at the first stop at or after
+// their point.
 // SIGINT/SIGTERM (core/interrupt.hpp): the engine stops after a whole step or event, the loop
 // writes a series row and a checkpoint at that state, summary.json says "interrupted" with the
 // command that resumes, and the exit status is 128 + signal.
@@ -13,6 +15,7 @@
 #include <fmt/format.h>
 
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <ostream>
 #include <utility>
@@ -51,6 +54,7 @@ void writeCheckpoint(Simulation& sim, const RunContext& ctx, std::int64_t nextSn
         std::ostream discard(nullptr);
         sim.saveState(discard);
     }
+    sim.writeCheckpointFiles(ctx.dir);
 }
 
 /// Loads `ctx.resumeDir`/checkpoint.bin into `sim`; a missing or foreign checkpoint is bad
@@ -137,7 +141,7 @@ int runSimulation(Simulation& sim, const model::SceneDef& scene, const RunContex
     const bool root = worldCommunicator().root();
     const RunPlan plan = sim.plan();
     Trigger end(plan.end), series(plan.series), snapshots(plan.snapshots), checkpoints(plan.checkpoints),
-        progressTick(plan.progress), benchmark(plan.benchmark);
+        lines(plan.lines), setups(plan.setups), progressTick(plan.progress), benchmark(plan.benchmark);
     const bool resumed = !ctx.resumeDir.empty();
     io::RunBookkeeping book;
     std::string lastCheckpoint =
@@ -151,7 +155,7 @@ int runSimulation(Simulation& sim, const model::SceneDef& scene, const RunContex
         LoopOutcome outcome{started, {}, lastCheckpoint, sim.warnings().size(), false};
         return finishRun(sim, ctx, outcome);
     }
-    for (Trigger* t : {&end, &series, &snapshots, &checkpoints, &progressTick, &benchmark})
+    for (Trigger* t : {&end, &series, &snapshots, &checkpoints, &lines, &setups, &progressTick, &benchmark})
         t->seek(sim.time(), sim.count());
     if (resumed && !(end.next() < std::numeric_limits<double>::infinity()))
         throw SceneError(makeDiagnostic(
@@ -188,6 +192,7 @@ int runSimulation(Simulation& sim, const model::SceneDef& scene, const RunContex
     if (!resumed) {
         seriesRow();
         writeSnapshot();
+        if (lines.next() < std::numeric_limits<double>::infinity()) sim.writeLine(ctx.dir);
     }
     const std::size_t warningsBefore = sim.warnings().size();
     if (!ctx.quiet && root) fmt::print(stderr, "{}\n", sim.banner(ctx.dir));
@@ -213,7 +218,8 @@ int runSimulation(Simulation& sim, const model::SceneDef& scene, const RunContex
     std::uint64_t lastCount = sim.count();
     for (;;) {
         Stop stop;
-        for (const Trigger* t : {&end, &series, &snapshots, &checkpoints, &progressTick, &benchmark})
+        for (const Trigger* t :
+             {&end, &series, &snapshots, &checkpoints, &lines, &setups, &progressTick, &benchmark})
             t->limit(stop);
         status = sim.advance(stop);
         if (status != kSimOk) break;
@@ -236,7 +242,9 @@ int runSimulation(Simulation& sim, const model::SceneDef& scene, const RunContex
         const bool doSeries = finished || series.reached(t, c);
         const bool doSnapshot = finished || snapshots.reached(t, c);
         const bool doCheckpoint = finished || checkpoints.reached(t, c);
-        if (doSeries || doSnapshot || doCheckpoint) {
+        const bool doLine = lines.reached(t, c);    // on its own schedule only, not forced at the end
+        const bool doSetup = setups.reached(t, c);  // the same
+        if (doSeries || doSnapshot || doCheckpoint || doLine || doSetup) {
             const double t0 = wallSeconds();
             if (doSeries) {
                 seriesRow();
@@ -245,6 +253,8 @@ int runSimulation(Simulation& sim, const model::SceneDef& scene, const RunContex
                 if (status != kSimOk) break;
             }
             if (doSnapshot) writeSnapshot();
+            if (doLine) sim.writeLine(ctx.dir);
+            if (doSetup) sim.writeSetup(ctx.dir);
             if (doCheckpoint) {
                 flushSeries();
                 writeCheckpoint(sim, ctx, book.nextSnapshot);
@@ -252,7 +262,8 @@ int runSimulation(Simulation& sim, const model::SceneDef& scene, const RunContex
             }
             report.outputSeconds += wallSeconds() - t0;
         }
-        for (Trigger* tr : {&series, &snapshots, &checkpoints, &progressTick, &benchmark}) tr->pass(t, c);
+        for (Trigger* tr : {&series, &snapshots, &checkpoints, &lines, &setups, &progressTick, &benchmark})
+            tr->pass(t, c);
         progress.update(position(), static_cast<std::int64_t>(sim.progressCounter()));
         if (finished) break;
     }

@@ -77,6 +77,8 @@ struct RunPlan {
     Schedule series;               ///< series.csv rows
     Schedule snapshots;            ///< VTK snapshots and per-snapshot files
     Schedule checkpoints;          ///< checkpoint.bin
+    Schedule lines;                ///< engine line outputs (dem: gc2d's gpl); default: never
+    Schedule setups;               ///< engine state dumps (dem: gc2d's numbered gso/gco); default: never
     Schedule progress;             ///< progress updates (besides every other stop)
     Schedule benchmark;            ///< one point: start of the timed segment (run.benchmark_from)
     double progressEnd = 0;        ///< progress bar: end position (time [s] or count)
@@ -134,6 +136,15 @@ public:
     virtual std::vector<double> seriesRow() = 0;
     /// Writes snapshot `index` into `dir` (VTK files registered in `pvd`, engine extras).
     virtual void snapshot(const std::string& dir, int index, io::PvdWriter& pvd) = 0;
+    /// Appends the engine's own one-line-per-stop outputs at a point of RunPlan::lines (dem:
+    /// gc2d's gpl line); also at t = 0 of a fresh run when the schedule has points. Default: none.
+    virtual void writeLine(const std::string& dir) { (void)dir; }
+    /// Writes the engine's numbered state dump at a point of RunPlan::setups (dem: gc2d's
+    /// <basename>.NNNN.gso and .gco). Default: none.
+    virtual void writeSetup(const std::string& dir) { (void)dir; }
+    /// The engine's own files beside every checkpoint.bin (dem: gc2d's unnumbered <basename>.gso
+    /// and .gco). Default: none.
+    virtual void writeCheckpointFiles(const std::string& dir) { (void)dir; }
     /// Writes final.csv (io/final_csv.hpp contract) and the engine's other end-of-run files.
     virtual void writeFinal(const std::string& dir) = 0;
     /// The engine's own summary.json keys (io/summary.hpp merges them with the common ones).

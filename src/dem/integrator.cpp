@@ -270,6 +270,24 @@ void GearPredictorCorrector::save(std::ostream& os) const {
     for (int k = 0; k < 12; ++k) writeVector(os, m_state.columns[static_cast<std::size_t>(k)]);
 }
 
+bool GearPredictorCorrector::restoreDerivatives(const std::vector<Real>& perSlot) {
+    const std::size_t n = perSlot.size() / 12;
+    for (std::size_t k = 0; k < 15; ++k) m_state.columns[k].assign(n, 0.0);
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t k = 0; k < 12; ++k) m_state.columns[k][i] = perSlot[12 * i + k];
+    m_started = true;
+    return true;
+}
+
+std::vector<Real> GearPredictorCorrector::derivatives() const {
+    if (!m_started) return {};
+    const std::size_t n = m_state.columns[0].size();
+    std::vector<Real> out(12 * n);
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t k = 0; k < 12; ++k) out[12 * i + k] = m_state.columns[k][i];
+    return out;
+}
+
 void GearPredictorCorrector::load(std::istream& is, std::size_t particles) {
     m_started = readPod<std::uint8_t>(is) != 0;
     for (int k = 0; k < 12; ++k) readVector(is, m_state.columns[static_cast<std::size_t>(k)]);

@@ -59,6 +59,12 @@ public:
     virtual void load(std::istream&, std::size_t /*particles*/) {}
     /// The per-particle state columns (nullptr: none), for moving particles between ranks.
     virtual StateColumns* state() noexcept { return nullptr; }
+    /// gc2d restart: the Gear predictor's scaled derivatives r2..r5 of x, y, phi, 12 per particle
+    /// in slot order (model::ParticleDef::gear). False for an integrator without such state.
+    virtual bool restoreDerivatives(const std::vector<Real>& /*perSlot*/) { return false; }
+    /// The same state for a gso: 12 per particle in slot order; empty when there is none (another
+    /// integrator, or a Gear predictor before its first step).
+    virtual std::vector<Real> derivatives() const { return {}; }
     const StateColumns* state() const noexcept { return const_cast<Integrator*>(this)->state(); }
     /// Threads of predict and correct (elementwise loops: the results do not depend on them).
     void setThreads(int threads) noexcept { m_threads = threads > 1 ? threads : 1; }
@@ -171,6 +177,8 @@ public:
     std::size_t memoryBytes() const noexcept override { return m_state.bytes(); }
     void save(std::ostream& os) const override;
     void load(std::istream& is, std::size_t particles) override;
+    bool restoreDerivatives(const std::vector<Real>& perSlot) override;
+    std::vector<Real> derivatives() const override;
 
 private:
     /// Scaled derivatives r2..r5 of degree of freedom d (0 x, 1 y, 2 phi).

@@ -287,7 +287,11 @@ PreparedScene prepareScene(const model::SceneDef& scene, Diagnostics& diags) {
                     "then [[block]]s, then [[heap]]s)",
                     sp.particle, static_cast<std::int64_t>(out.initial.particles.size()) - 1));
     }
-    checkStartOverlaps(scene, out.initial, diags);
+    // A gc2d restart (a gso: the state of a running system, TIME t0 > 0) starts with its contacts.
+    const bool restart = scene.run.startTime > 0 || !scene.rememberedContacts.empty() ||
+                         std::any_of(scene.particles.begin(), scene.particles.end(),
+                                     [](const model::ParticleDef& p) { return !p.gear.empty(); });
+    if (!restart) checkStartOverlaps(scene, out.initial, diags);
     diags.throwIfAny();
 
     // Characteristic impact speed for nonlinear contacts: the fastest start velocity or a free

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "core/parallel.hpp"
 #include "core/suggest.hpp"
@@ -274,6 +275,70 @@ FluidForceConfig fluidForceConfig(const model::FluidDef& def) {
     return c;
 }
 
+namespace {
+
+/// gc2d restart (a gso's TIME t0 and PARTICLE derivatives; gc2d spec 9.4): the clock at t0 and the
+/// Gear predictor's state. [[particle]]s come first in generation order, so particle j is slot j.
+void restartState(const model::SceneDef& scene, World& world) {
+    if (scene.run.startTime > 0) world.setStartStep(stepsIn(scene.run.startTime, scene.dem.dt));
+    const bool gear = std::any_of(scene.particles.begin(), scene.particles.end(),
+                                  [](const model::ParticleDef& p) { return !p.gear.empty(); });
+    if (!gear) return;
+    std::vector<Real> perSlot(model::ParticleDef::kGearValues * world.store().size(), 0.0);
+    for (std::size_t j = 0; j < scene.particles.size(); ++j)
+        std::copy(scene.particles[j].gear.begin(), scene.particles[j].gear.end(),
+                  perSlot.begin() + static_cast<std::ptrdiff_t>(model::ParticleDef::kGearValues * j));
+    world.restoreDerivatives(perSlot);
+}
+
+/// The gci's contacts (scene.rememberedContacts) in slots and wall indices: gc2d ids are a WALL's or
+/// PARTICLE's ID, or else io/gc2d_ids.hpp's numbering (walls 0 .. W - 1, particle j W + j). The
+/// spring xi = Summ_Friction / k_t with the k_t of the pair's gc2d friction law (of this scene: a
+/// restart with another E keeps gc2d's stored force). Pairs of unknown ids are dropped (counted).
+std::vector<RememberedContact> rememberedContacts(const model::SceneDef& scene, const LawTable& laws,
+                                                  const std::vector<std::string>& names) {
+    std::vector<RememberedContact> out;
+    if (scene.rememberedContacts.empty()) return out;
+    std::map<std::int64_t, std::pair<bool, std::uint32_t>> objects;  // id -> (wall?, index)
+    const auto wallCount = static_cast<std::int64_t>(scene.walls.size());
+    for (std::size_t k = 0; k < scene.walls.size(); ++k)
+        objects[scene.walls[k].gc2dId >= 0 ? scene.walls[k].gc2dId : static_cast<std::int64_t>(k)] = {
+            true, static_cast<std::uint32_t>(k)};
+    for (std::size_t j = 0; j < scene.particles.size(); ++j)
+        objects[scene.particles[j].gc2dId >= 0 ? scene.particles[j].gc2dId
+                                               : wallCount + static_cast<std::int64_t>(j)] = {
+            false, static_cast<std::uint32_t>(j)};
+    const auto materialOf = [&](const std::string& name) {
+        return static_cast<std::uint32_t>(std::find(names.begin(), names.end(), name) - names.begin());
+    };
+    for (const auto& c : scene.rememberedContacts) {
+        auto a = objects.find(c.id1), b = objects.find(c.id2);
+        if (a == objects.end() || b == objects.end() || (a->second.first && b->second.first)) {
+            RememberedContact skipped;
+            skipped.unknown = true;
+            out.push_back(skipped);
+            continue;
+        }
+        if (a->second.first) std::swap(a, b);  // the particle first
+        const auto& pa = scene.particles[a->second.second];
+        const std::string& otherMaterial = b->second.first ? scene.walls[b->second.second].material
+                                                           : scene.particles[b->second.second].material;
+        const auto* friction = std::get_if<AreaFriction>(
+            &laws.law(materialOf(pa.material), materialOf(otherMaterial)).tangential);
+        const Real kt = friction ? friction->kt : 0;  // other laws: no gc2d spring to restore
+        RememberedContact r;
+        r.a = a->second.second;
+        r.b = b->second.second;
+        r.wall = b->second.first;
+        r.xi = kt > 0 ? c.friction / kt : 0;
+        r.areaOld = c.oldArea;
+        out.push_back(r);
+    }
+    return out;
+}
+
+}  // namespace
+
 World makeWorld(const model::SceneDef& scene, const InitialParticles& initial, fluid::FieldSource fields) {
     Diagnostics ignored;  // the scene was validated before
     LawTable laws = buildLawTable(scene, ignored);
@@ -322,7 +387,10 @@ World makeWorld(const model::SceneDef& scene, const InitialParticles& initial, f
         sp.to = def.to;
         config.springs.push_back(sp);
     }
-    return World(std::move(config), std::move(store), std::move(walls), std::move(laws), std::move(pool));
+    config.rememberedContacts = rememberedContacts(scene, laws, names);
+    World world(std::move(config), std::move(store), std::move(walls), std::move(laws), std::move(pool));
+    restartState(scene, world);
+    return world;
 }
 
 }  // namespace granulab::dem

@@ -8,6 +8,7 @@
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
+#include <unordered_map>
 
 #include "core/binary_io.hpp"
 #include "core/parallel.hpp"
@@ -219,10 +220,39 @@ void World::initialize() {
     if (m_config.sizeCycle) applySizeScale(time());
     rebuildNeighbors();
     if (m_field) m_field->update(time());
+    // A gc2d restart: the remembered contacts (slots of construction) before the set-up evaluation,
+    // so that its forces hold the springs, and again after it, since the evaluation's bookkeeping
+    // (Old_Area = the area now; a new contact's area) must not replace the state of the step that
+    // wrote them (the areas of that step's predicted positions; pairs not listed had none).
+    std::vector<RememberedContact> remembered = rememberedInSlots();
+    if (!remembered.empty()) restoreContacts(remembered);
     // Set-up evaluation: nothing has moved yet, so no tangential displacement (drift = none).
     const BodyForces body = bodyForcesAt(m_step);
     evaluateForces(body, DriftVelocities{}, false);
     evaluateFieldForces(body);
+    if (!remembered.empty()) {
+        for (ContactList* l : {&m_list.pairs, &m_list.wallPairs}) {  // what the gci does not list: new
+            std::fill(l->xi.begin(), l->xi.end(), 0.0);
+            std::fill(l->areaOld.begin(), l->areaOld.end(), 0.0);
+        }
+        m_unrestoredContacts = m_config.rememberedContacts.size() - restoreContacts(remembered);
+        m_config.rememberedContacts.clear();
+    }
+}
+
+std::vector<RememberedContact> World::rememberedInSlots() const {
+    std::vector<RememberedContact> contacts;
+    if (m_config.rememberedContacts.empty()) return contacts;
+    std::vector<std::uint32_t> slotOf(m_store.size());
+    for (std::uint32_t k = 0; k < m_store.size(); ++k)
+        if (m_store.id[k] < slotOf.size()) slotOf[m_store.id[k]] = k;  // ids are construction slots
+    for (RememberedContact c : m_config.rememberedContacts) {
+        if (c.unknown || c.a >= slotOf.size() || (!c.wall && c.b >= slotOf.size())) continue;
+        c.a = slotOf[c.a];
+        if (!c.wall) c.b = slotOf[c.b];
+        contacts.push_back(c);
+    }
+    return contacts;
 }
 
 std::uint32_t World::step() {
@@ -464,6 +494,48 @@ void readList(std::istream& is, ContactList& l) {
     readVector(is, l.bucketStart);
 }
 }  // namespace
+
+std::size_t World::restoreContacts(const std::vector<RememberedContact>& contacts) {
+    std::size_t found = 0;
+    const auto indexOf = [](const ContactList& l) {
+        std::unordered_map<std::uint64_t, std::size_t> index;
+        for (std::size_t k = 0; k < l.size(); ++k) index.emplace(pairKey(l.first[k], l.second[k]), k);
+        return index;
+    };
+    const auto pairIndex = indexOf(m_list.pairs), wallIndex = indexOf(m_list.wallPairs);
+    const auto set = [&](ContactList& l, const std::unordered_map<std::uint64_t, std::size_t>& index,
+                         std::uint32_t first, std::uint32_t second, const RememberedContact& c) {
+        const auto it = index.find(pairKey(first, second));
+        if (it == index.end()) return;
+        l.xi[it->second] = c.xi;
+        if (!l.areaOld.empty()) l.areaOld[it->second] = c.areaOld;
+        ++found;
+    };
+    for (const RememberedContact& c : contacts) {
+        if (c.wall) {
+            if (c.b < m_walls.walls.size())
+                set(m_list.wallPairs, wallIndex, c.a, m_walls.walls[c.b].firstSegment, c);
+        } else {  // a pair is kept as (lower slot, higher slot); xi is the same either way round
+            set(m_list.pairs, pairIndex, std::min(c.a, c.b), std::max(c.a, c.b), c);
+        }
+    }
+    return found;
+}
+
+std::vector<RememberedContact> World::rememberedContacts() const {
+    std::vector<RememberedContact> out;
+    const auto collect = [&](const ContactList& l, bool wall) {
+        for (std::size_t k = 0; k < l.size(); ++k) {
+            const Real area = l.areaOld.empty() ? 0 : l.areaOld[k];
+            if (l.xi[k] == 0 && area == 0) continue;
+            const std::uint32_t b = wall ? m_walls.segments[l.second[k]].wall : l.second[k];
+            out.push_back({l.first[k], b, wall, false, l.xi[k], area});
+        }
+    };
+    collect(m_list.pairs, false);
+    collect(m_list.wallPairs, true);
+    return out;
+}
 
 void World::saveState(std::ostream& os) const {
     writePod(os, kStateMagic);

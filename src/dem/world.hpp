@@ -37,13 +37,25 @@ struct DampingWindow {
     std::int64_t fromStep = 0, toStep = 0;
 };
 
+/// The remembered state of one contact (a gc2d gci; dem/setup.hpp): particle slot a with particle
+/// slot b, or with wall b; `unknown`: named ids the scene does not have (counted, not restored).
+struct RememberedContact {
+    std::uint32_t a = 0, b = 0;
+    bool wall = false;
+    bool unknown = false;
+    Real xi = 0;       ///< [m] tangential spring
+    Real areaOld = 0;  ///< [m^2] overlap area of the last step
+};
+
 struct WorldConfig {
     Real dt = 0;   ///< [s]
     Vec2 gravity;  ///< [m/s^2]
     std::vector<DampingWindow> damping;
     Real skin = 0;               ///< [m] neighbour-list skin
     int sortEveryRebuilds = 16;  ///< spatial re-sort of slots every k-th rebuild (0: never)
-    Real overlapGuard = 0;       ///< see BodyForces::overlapGuard
+    /// gc2d restart: contacts whose history initialize() restores (slots at construction)
+    std::vector<RememberedContact> rememberedContacts;
+    Real overlapGuard = 0;  ///< see BodyForces::overlapGuard
     IntegratorParams integrator;
     std::string broadPhase = "cell_grid";
     int threads = 1;                  ///< threads of the step (run.threads); the results do not depend on it
@@ -231,6 +243,27 @@ public:
     /// Bytes held by the engine (store, neighbour list, broad phase).
     std::size_t memoryBytes() const noexcept;
 
+    // ---- gc2d restart files (a gso's state and a gci's contacts; io/gsi_scene.hpp) ----------
+    /// Sets the clock to step `step` (t0 = step dt) before initialize().
+    void setStartStep(std::int64_t step) noexcept { m_step = step; }
+    /// The Gear predictor's scaled derivatives, 12 per particle in slot order (model::ParticleDef::gear);
+    /// false when the integrator keeps none.
+    bool restoreDerivatives(const std::vector<Real>& perSlot) {
+        return m_integrator->restoreDerivatives(perSlot);
+    }
+    /// The same for writing a gso; empty when there is none.
+    std::vector<Real> integratorDerivatives() const { return m_integrator->derivatives(); }
+    /// Gives the listed contacts their history (pairs not in the neighbour list are skipped);
+    /// initialize() calls it with WorldConfig::rememberedContacts. Returns how many were found.
+    std::size_t restoreContacts(const std::vector<RememberedContact>& contacts);
+    /// The contacts of WorldConfig::rememberedContacts that initialize() could not restore (ids
+    /// unknown to the scene, or bodies not in contact range).
+    std::size_t unrestoredContacts() const noexcept { return m_unrestoredContacts; }
+    /// Every contact with a history (a tangential spring or an overlap area), for a gco.
+    std::vector<RememberedContact> rememberedContacts() const;
+    /// WorldConfig::rememberedContacts in the current slots (the particles may have been re-sorted).
+    std::vector<RememberedContact> rememberedInSlots() const;
+
     /// Complete dynamic state for a bit-for-bit resume.
     void saveState(std::ostream& os) const;
     void loadState(std::istream& is);
@@ -270,6 +303,7 @@ private:
     bool m_recordContacts = false;
     StageTimers<Stage> m_timers;
     std::int64_t m_step = 0;
+    std::size_t m_unrestoredContacts = 0;
     std::uint64_t m_forceEvaluations = 0;
     Real m_minRadius = 0;
     Real m_maxRadius = 0;  ///< [m] largest radius since t = 0 (outlet capture zones)

@@ -7,9 +7,14 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <system_error>
+
+#include "io/gci_file.hpp"
 
 namespace granulab::io {
 
@@ -65,7 +70,11 @@ Real stepsInterval(Real steps, Real dt) {
     return steps >= kGc2dInfinity || steps <= 0 ? 0.0 : steps * dt;
 }
 
+/// run.seed of SEED s1 s2: s1 2^32 + s2 when both are whole numbers in [0, 2^32) (so every seed
+/// has a SEED line: io/gsi_writer.hpp writes it back), otherwise a hash of both numbers' bits.
 std::uint64_t seedOf(Real a, Real b) {
+    const auto word = [](Real v) { return v >= 0 && v < 4294967296.0 && v == std::floor(v); };
+    if (word(a) && word(b)) return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint64_t>(b);
     std::uint64_t h = 0xcbf29ce484222325ULL;  // FNV-1a over the bits of both numbers
     for (const Real v : {a, b}) {
         unsigned char bytes[sizeof(Real)];
@@ -130,13 +139,8 @@ private:
         run.loc = g.object().loc;
         run.title = g.has("BASENAME") ? g.entry("BASENAME")->text : "default";
         run.seed = seedOf(g.number("SEED", 0, 0), g.number("SEED", 0, 1));
-        const Real t0 = g.number("TIME", 0, 0);
+        run.startTime = g.number("TIME", 0, 0);  // t0 > 0: a restart from a gso
         run.endTime = g.number("TIME", 1, 1);
-        if (t0 != 0)
-            m_diags.error(g.loc("TIME"), "TIME",
-                          fmt::format("a start time of {} s (a restart from a gso file) is not read yet: "
-                                      "granulab's runs start at t = 0",
-                                      t0));
         auto& dem = m_scene.dem;
         dem.loc = g.loc("DELTA_T");
         dem.dt = g.number("DELTA_T", 1e-4);
@@ -172,6 +176,9 @@ private:
             h.t2 = g.number("HEAT_TIME", kGc2dInfinity, 1);
             if (h.t1 >= kGc2dInfinity) h.t1 = 1e300;
             if (h.t2 >= kGc2dInfinity) h.t2 = 1e300;
+            // HEAT_TIME inf inf (its default) is "off": literally t_c = 2^32 - 1 and s != 1, which
+            // the spec's audit note (2.4) corrects to s = 1.
+            if (h.t1 >= 1e300 && h.t2 >= 1e300) h.present = false;
         }
         for (const char* key : {"STEPS_DATA", "STEPS_CHECKPOINT", "STEPS_SETUP", "STEPS_DUMPLINE"})
             if (const GsiEntry* e = g.entry(key); e && !(e->numbers[0] >= 1))
@@ -184,6 +191,24 @@ private:
         out.seriesInterval = stepsInterval(g.number("STEPS_DATA", 10000), dem.dt);
         out.snapshotInterval = out.seriesInterval;
         out.checkpointInterval = stepsInterval(g.number("STEPS_CHECKPOINT", 10000), dem.dt);
+        out.gc2d.enabled = true;  // a gsi scene writes gc2d's files (spec 9.5)
+        out.gc2d.basename = std::filesystem::path(run.title).filename().string();
+        if (out.gc2d.basename.empty() || out.gc2d.basename == "." || out.gc2d.basename == "..")
+            out.gc2d.basename = "default";
+        out.gc2d.setupInterval = stepsInterval(g.number("STEPS_SETUP", kGc2dInfinity), dem.dt);
+        out.gc2d.lineInterval = stepsInterval(g.number("STEPS_DUMPLINE", kGc2dInfinity), dem.dt);
+        for (auto [key, number] : {std::pair{"NEXT_DATA_FILENUMBER", &out.gc2d.nextDataNumber},
+                                   std::pair{"NEXT_SETUP_FILENUMBER", &out.gc2d.nextSetupNumber}}) {
+            const Real n = g.number(key, 1);
+            if (n >= 1 && n <= 9999 && n == std::floor(n))
+                *number = static_cast<std::int64_t>(n);
+            else
+                m_diags.error(
+                    g.loc(key), key,
+                    fmt::format("{} is the NNNN of the next file name, a whole number in [1, 9999]; "
+                                "got {}",
+                                key, n));
+        }
 
         model::MaterialDef grain;
         grain.name = "grain";
@@ -232,6 +257,7 @@ private:
         w.offset = r.pair("OFFSET", {0, 0});
         w.angle = -r.number("ANGLE", 0);  // gc2d turns clockwise
         w.material = "wall";
+        if (const GsiEntry* id = r.entry("ID")) w.gc2dId = static_cast<std::int64_t>(id->numbers[0]);
         w.surfaceVelocity = r.pair("VELOCITY", {0, 0});
         if (const Real force = r.number("PISTON_FORCE", 0); force != 0) {
             w.pistonForce = force;
@@ -252,14 +278,7 @@ private:
     }
 
     void particle(const ObjectReader& r, int index) {
-        for (const char* key : {"PC_TRANS3", "PC_TRANS4", "PC_TRANS5", "PC_ROT3", "PC_ROT4", "PC_ROT5",
-                                "OMEGA_DOT", "ACCELERATION"})
-            if (const GsiEntry* e = r.entry(key);
-                e && std::any_of(e->numbers.begin(), e->numbers.end(), [](Real v) { return v != 0; }))
-                m_diags.error(e->loc, key,
-                              fmt::format("{} (initial higher derivatives, written by gc2d into gso restart "
-                                          "files) is not read yet; only 0 is accepted",
-                                          key));
+        std::vector<Real> gear = restartState(r);
         const std::vector<Vec2>* c = corners(r);
         if (!c) return;
         model::ShapeDef shape;
@@ -275,6 +294,8 @@ private:
         p.velocity = r.pair("VELOCITY", {0, 0});
         p.material = "grain";
         p.loc = r.object().loc;
+        p.gear = std::move(gear);
+        if (const GsiEntry* id = r.entry("ID")) p.gc2dId = static_cast<std::int64_t>(id->numbers[0]);
         m_scene.shapes.push_back(std::move(shape));
         m_scene.particles.push_back(std::move(p));
         if (r.firstOf("DRAG_")) {
@@ -290,6 +311,28 @@ private:
             s.loc = r.loc("DRAG_K");
             m_scene.springs.push_back(s);
         }
+    }
+
+    /// The Gear predictor's state of a gso PARTICLE (model::ParticleDef::gear): ACCELERATION and
+    /// OMEGA_DOT give r2 = dt^2/2 a, PC_TRANS3-5 and PC_ROT3-5 are r3..r5 as gc2d writes them (scaled,
+    /// [m] and [rad], rotations clockwise). Empty when none of them is given.
+    std::vector<Real> restartState(const ObjectReader& r) const {
+        static const char* const keys[] = {"ACCELERATION", "OMEGA_DOT", "PC_TRANS3", "PC_TRANS4",
+                                           "PC_TRANS5",    "PC_ROT3",   "PC_ROT4",   "PC_ROT5"};
+        if (std::none_of(std::begin(keys), std::end(keys), [&](const char* k) { return r.has(k); }))
+            return {};
+        const Real dt = m_scene.dem.dt, half = dt * dt / 2;
+        std::vector<Real> g(model::ParticleDef::kGearValues, 0.0);
+        g[0] = r.number("ACCELERATION", 0, 0) * half;
+        g[4] = r.number("ACCELERATION", 0, 1) * half;
+        g[8] = -r.number("OMEGA_DOT", 0) * half;
+        for (int n = 3; n <= 5; ++n) {
+            const std::string trans = fmt::format("PC_TRANS{}", n), rot = fmt::format("PC_ROT{}", n);
+            g[static_cast<std::size_t>(n - 2)] = r.number(trans, 0, 0);
+            g[static_cast<std::size_t>(4 + n - 2)] = r.number(trans, 0, 1);
+            g[static_cast<std::size_t>(8 + n - 2)] = -r.number(rot, 0);
+        }
+        return g;
     }
 
     /// The random grain of GENERATE_BLOCK and DROPSOURCE, with the object's defaults.
@@ -392,7 +435,26 @@ model::SceneDef readGsiFile(const std::string& path) {
         s << in.rdbuf();
         text = s.str();
     }
-    return gsiToScene(parseGsi(text, path));
+    const GsiDocument doc = parseGsi(text, path);
+    model::SceneDef scene = gsiToScene(doc);
+    const std::string gci = gciPathFor(path);
+    std::error_code ec;
+    if (std::filesystem::exists(gci, ec)) {  // a restart: the contacts of the gco it was renamed from
+        std::ifstream in(gci, std::ios::binary);
+        if (!in)
+            throw SceneError(makeDiagnostic(gci, 0, "", "cannot open the gci contact file (unreadable)"));
+        std::stringstream s;
+        s << in.rdbuf();
+        GciDocument contacts = parseGci(s.str(), gci);
+        if (contacts.identification != doc.identification)
+            throw SceneError(makeDiagnostic(
+                gci, 2, "identification",
+                fmt::format("'{}' does not match line 2 of {} ('{}'): the gci belongs to another gsi (gc2d "
+                            "writes a gso and its gco with the same identification; rename both together)",
+                            contacts.identification, path, doc.identification)));
+        scene.rememberedContacts = std::move(contacts.contacts);
+    }
+    return scene;
 }
 
 }  // namespace granulab::io

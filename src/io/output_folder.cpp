@@ -21,11 +21,17 @@ constexpr std::array<std::string_view, 6> kFiles = {"summary.json",   "series.cs
 constexpr std::array<std::string_view, 3> kFolders = {"vtk", "png", "analysis"};
 /// What the writers put into those folders (snapshots, pictures, analysis tables and summaries).
 constexpr std::array<std::string_view, 5> kFolderKinds = {".vtp", ".png", ".csv", ".json", ".tmp"};
+/// gc2d's files (output.gc2d; gc2d spec 9.1), named <basename>[.NNNN].<ext> after the scene.
+constexpr std::array<std::string_view, 9> kGc2dKinds = {".ggf", ".gff", ".gpf", ".gtf", ".gpl",
+                                                        ".glk", ".ps",  ".gso", ".gco"};
 
 bool isRunFile(const std::string& name) {
-    const std::string_view n = name;
+    std::string_view n = name;
     for (const auto f : kFiles)
         if (n == f || (n.size() == f.size() + 4 && n.starts_with(f) && n.ends_with(".tmp"))) return true;
+    if (n.ends_with(".tmp")) n.remove_suffix(4);  // an atomic write's leftover
+    for (const auto ext : kGc2dKinds)
+        if (n.size() > ext.size() && n.ends_with(ext)) return true;
     return false;
 }
 

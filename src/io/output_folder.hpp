@@ -9,8 +9,9 @@
 namespace granulab::io {
 
 /// The entries of `dir` that a granulab run (or `render`/`analyze` of it) writes: summary.json,
-/// series.csv, final.csv, checkpoint.bin, snapshots.pvd, theory.csv, their ".tmp" leftovers, and
-/// the folders vtk/, png/ and analysis/. Sorted; empty when `dir` does not exist or holds none.
+/// series.csv, final.csv, checkpoint.bin, snapshots.pvd, theory.csv, gc2d's files (*.ggf, *.gff,
+/// *.gpf, *.gtf, *.gpl, *.glk, *.ps, *.gso, *.gco), their ".tmp" leftovers, and the folders vtk/,
+/// png/ and analysis/. Sorted; empty when `dir` does not exist or holds none.
 std::vector<std::string> runOutputsIn(const std::string& dir);
 
 /// Removes those entries: the files, and inside the folders only files of granulab's kinds

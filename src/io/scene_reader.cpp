@@ -56,6 +56,7 @@ const SceneSections* readRun(TableReader& r, model::RunDef& run, const std::vect
     if (!r.number("end_time", run.endTime) && !r.table().get("end_time") && running && running->needsEndTime)
         r.diags().error(run.loc, "run.end_time", "missing: simulated end time [s], allowed (0, inf)");
     r.number("benchmark_from", run.benchmarkFrom);
+    r.number("start_time", run.startTime);
     std::int64_t threads = run.threads;
     if (r.integer("threads", threads)) {
         if (threads < 0 || threads > kMaxThreads)
@@ -79,6 +80,12 @@ void readOutput(TableReader& r, model::OutputDef& o) {
     r.boolean("contacts", o.contacts);
     r.boolean("particle_series", o.particleSeries);
     r.strings("analyses", o.analyses);
+    r.boolean("gc2d", o.gc2d.enabled);
+    r.string("gc2d_basename", o.gc2d.basename);
+    r.integer("gc2d_next_data_number", o.gc2d.nextDataNumber);
+    r.integer("gc2d_next_setup_number", o.gc2d.nextSetupNumber);
+    r.number("gc2d_setup_interval", o.gc2d.setupInterval);
+    r.number("gc2d_line_interval", o.gc2d.lineInterval);
 }
 
 /// Reads the sections of the running engine (nullptr: run.engine is unknown, its error is

@@ -26,6 +26,79 @@ namespace granulab::io {
 
 namespace {
 
+/// output.gc2d_*: a file stem without folders, positive file numbers, intervals >= 0.
+void checkGc2dOutput(const model::OutputDef& o, Diagnostics& d) {
+    const model::Gc2dOutputDef& g = o.gc2d;
+    if (g.basename.empty() || g.basename.find_first_of("/\\") != std::string::npos || g.basename == "." ||
+        g.basename == "..")
+        d.error(o.loc, "output.gc2d_basename",
+                fmt::format("'{}' must be a file stem without a folder (the files go into the output "
+                            "folder), e.g. \"piston2\"",
+                            g.basename));
+    for (const auto& [key, n] : {std::pair{"output.gc2d_next_data_number", g.nextDataNumber},
+                                 std::pair{"output.gc2d_next_setup_number", g.nextSetupNumber}})
+        if (n < 1 || n > 9999)
+            d.error(o.loc, key, fmt::format("{} is a file number NNNN, allowed [1, 9999]", n));
+    for (const auto& [key, v] : {std::pair{"output.gc2d_setup_interval", g.setupInterval},
+                                 std::pair{"output.gc2d_line_interval", g.lineInterval}})
+        if (!(v >= 0 && std::isfinite(v)))
+            d.error(o.loc, key, fmt::format("{} s: an interval in s, allowed [0, inf) (0: never)", v));
+}
+
+/// output.gc2d = true: gc2d knows only polygons (spec 2.1), and its ggf has no way to write a disk,
+/// so a scene that makes disks (particles, blocks, heaps, sources, inlets) is refused
+/// (docs/coming-from-gc2d.md "Legacy outputs").
+void checkGc2dGrains(const model::SceneDef& sc, Diagnostics& d) {
+    if (!sc.output.gc2d.enabled) return;
+    const auto refuse = [&](const SourceLoc& loc, const std::string& what) {
+        d.error(loc, "output.gc2d",
+                fmt::format("gc2d's files describe polygons only (gc2d has no disks), and {} makes disks; "
+                            "give it a polygon [[shape]] (kind = \"regular\" with many corners is close to "
+                            "a disk), or set output.gc2d = false",
+                            what));
+    };
+    for (std::size_t k = 0; k < sc.particles.size(); ++k)
+        if (sc.particles[k].shape == "disk") refuse(sc.particles[k].loc, fmt::format("particle[{}]", k));
+    for (std::size_t k = 0; k < sc.blocks.size(); ++k)
+        if (sc.blocks[k].shape == "disk") refuse(sc.blocks[k].loc, fmt::format("block[{}]", k));
+    for (std::size_t k = 0; k < sc.heaps.size(); ++k) {
+        const model::HeapDef& h = sc.heaps[k];
+        if (h.shape == "disk" && !(h.size.x > 0 && h.size.y > 0))  // size: plain rectangles
+            refuse(h.loc, fmt::format("heap[{}]", k));
+    }
+    const auto& m = sc.machines;
+    for (std::size_t k = 0; k < m.sources.size(); ++k)
+        if (m.sources[k].insert.shape == "disk") refuse(m.sources[k].loc, fmt::format("source[{}]", k));
+    for (std::size_t k = 0; k < m.inlets.size(); ++k)
+        if (m.inlets[k].insert.shape == "disk") refuse(m.inlets[k].loc, fmt::format("inlet[{}]", k));
+    for (std::size_t k = 0; k < m.boundaries.size(); ++k) {
+        const model::BoundaryDef& b = m.boundaries[k];
+        const bool inlets = std::any_of(b.edges.begin(), b.edges.end(),
+                                        [](const model::BoundaryDef::Edge& e) { return e.type == "inlet"; });
+        if (inlets && b.insert.shape == "disk")
+            refuse(b.loc, fmt::format("boundary[{}] (its inlet edges)", k));
+    }
+}
+
+/// A gc2d restart: the start time on the step grid and before the end. (PARTICLEs without the
+/// Gear state in a restart start with zero higher derivatives, like a grain a source inserts.)
+void checkRestart(const model::SceneDef& sc, Diagnostics& d) {
+    const Real t0 = sc.run.startTime, dt = sc.dem.dt;
+    if (!(t0 >= 0 && std::isfinite(t0)))
+        d.error(sc.run.loc, "run.start_time", fmt::format("{} s: allowed [0, end_time)", t0));
+    else if (t0 > 0 && dt > 0) {
+        const Real steps = t0 / dt;
+        if (std::abs(steps - std::round(steps)) > 1e-6 * std::max<Real>(1, steps))
+            d.error(
+                sc.run.loc, "run.start_time",
+                fmt::format("{} s is not a whole number of steps of dt = {} s (the DEM clock is t = k dt)",
+                            t0, dt));
+        if (!(t0 < sc.run.endTime))
+            d.error(sc.run.loc, "run.start_time",
+                    fmt::format("{} s: the run starts after its end time {} s", t0, sc.run.endTime));
+    }
+}
+
 /// output.analyses: names of `granulab analyze` that need no command-line option, and the files
 /// they read (snapshots; contact files for the force analyses).
 void checkInRunAnalyses(const model::OutputDef& o, Diagnostics& d) {
@@ -220,6 +293,9 @@ void checkStatic(const model::SceneDef& sc, Checker& c, const std::vector<std::s
     c.nonNegative(sc.output.loc, "output.snapshot_interval", sc.output.snapshotInterval, "s");
     c.nonNegative(sc.output.loc, "output.series_interval", sc.output.seriesInterval, "s");
     c.nonNegative(sc.output.loc, "output.checkpoint_interval", sc.output.checkpointInterval, "s");
+    checkGc2dOutput(sc.output, d);
+    checkRestart(sc, d);
+    checkGc2dGrains(sc, d);
     checkInRunAnalyses(sc.output, d);
 }
 

@@ -80,6 +80,10 @@ void checkEdmdDef(const model::SceneDef& sc, Diagnostics& d) {
         d.error(sc.output.loc, "output.analyses",
                 "is for dem runs; an edmd run writes its gas analyses at every snapshot with "
                 "edmd.analysis_files = true");
+    if (sc.output.gc2d.enabled)
+        d.error(sc.output.loc, "output.gc2d",
+                "is for dem runs (gc2d's ggf, gff, gpf, gtf and gpl files of polygon grains); an edmd run "
+                "writes its particles in the snapshots and final.csv");
     if (sc.output.particleSeries)
         d.error(
             sc.output.loc, "output.particle_series",

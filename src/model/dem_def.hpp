@@ -113,6 +113,12 @@ struct ParticleDef {
     Real omega = 0;              ///< [rad/s]
     Real radius = 0;             ///< [m] disks only (polygon sizes come from their [[shape]])
     std::string material;
+    /// gc2d restart (a gso's ACCELERATION, OMEGA_DOT, PC_TRANS3-5, PC_ROT3-5): the Gear
+    /// predictor's scaled derivatives r_n = dt^n/n! d^n/dt^n, n = 2..5, of x, y [m] and phi [rad]
+    /// (counter-clockwise), kGearValues of them; empty: the integrator starts from the first forces.
+    static constexpr std::size_t kGearValues = 12;
+    std::vector<Real> gear;
+    std::int64_t gc2dId = -1;  ///< gc2d id of a gsi PARTICLE with ID (io/gc2d_ids.hpp); -1: none
     SourceLoc loc;
 };
 
@@ -186,6 +192,16 @@ struct WallDef {
     Real omega = 0;             ///< [rad/s]
     std::optional<Vec2> pivot;  ///< [m] default: the centroid of the points
     Real solidUntil = 1e300;    ///< [s] set for an outlet's lid, not a scene key
+    std::int64_t gc2dId = -1;   ///< gc2d id of a gsi WALL with ID (io/gc2d_ids.hpp); -1: none
+    SourceLoc loc;
+};
+
+/// gc2d restart: one COLLISION section of a gci file (gc2d spec 9.4; io/gci_file.hpp), the
+/// remembered state of the contact of the objects with gc2d ids id1 and id2 (io/gc2d_ids.hpp).
+struct RememberedContactDef {
+    std::int64_t id1 = -1, id2 = -1;
+    Real friction = 0;  ///< [N] Summ_Friction: the tangential spring force k_t xi
+    Real oldArea = 0;   ///< [m^2] Old_Area: the overlap area of the last step
     SourceLoc loc;
 };
 

@@ -22,11 +22,25 @@ struct RunDef {
     int dimension = 2;           ///< spatial dimension; dem supports 2, edmd 2 and 3
     std::uint64_t seed = 1;      ///< seed of every random draw in scene generation
     Real endTime = 0;  ///< [s] simulated time at which the run stops (edmd: or edmd.end_tau / end_collisions)
+    Real startTime =
+        0;  ///< [s] dem: the clock at the start (a gc2d gso restart: TIME t0 t1), a whole number of dt
     Real benchmarkFrom = -1;  ///< [s] report throughput separately from this time on (<0: off)
     int threads = 0;          ///< dem: threads of the step (0: every core the process may use)
     bool loadBalance = true;  ///< dem under mpirun: move the slab cuts by contacts (docs/physics/dem-mpi.md)
     std::string title;
     SourceLoc loc;
+};
+
+/// gc2d's legacy files (gc2d spec 9.1, 9.5; docs/coming-from-gc2d.md "Legacy outputs"), written
+/// into the output folder as <basename>[.NNNN].<ext> when `enabled` (output.gc2d = true; a gsi
+/// scene sets it): ggf, gff + gpf at every snapshot, gtf, gpl, the lock .glk and a .ps picture.
+struct Gc2dOutputDef {
+    bool enabled = false;
+    std::string basename = "default";  ///< file stem (gc2d BASENAME; a folder part is dropped)
+    std::int64_t nextDataNumber = 1;   ///< NNNN of the first gff/gpf dump (NEXT_DATA_FILENUMBER)
+    std::int64_t nextSetupNumber = 1;  ///< NNNN of the first numbered gso/gco (NEXT_SETUP_FILENUMBER)
+    Real setupInterval = 0;            ///< [s] numbered gso/gco setup dumps (STEPS_SETUP dt; 0: never)
+    Real lineInterval = 0;             ///< [s] gpl lines (STEPS_DUMPLINE dt; 0: never)
 };
 
 struct OutputDef {
@@ -41,6 +55,7 @@ struct OutputDef {
     /// DEM: the cfddem seed's nine per-particle series CSV/r_x.csv ... alpha.csv (spec 6.6) at every
     /// series.csv row
     bool particleSeries = false;
+    Gc2dOutputDef gc2d;  ///< DEM: gc2d's legacy files
     SourceLoc loc;
 };
 
@@ -58,6 +73,9 @@ struct SceneDef {
     std::vector<HeapDef> heaps;  ///< generated after the blocks (ids follow theirs)
     std::vector<WallDef> walls;
     std::vector<SpringDef> springs;
+    /// gc2d restart: the contacts of the gci beside a gsi (io/gci_file.hpp); the dem engine gives
+    /// them their tangential spring and last overlap area at the start.
+    std::vector<RememberedContactDef> rememberedContacts;
     MachineDefs machines;      ///< drums, sources, inlets, outlets, boundaries, gravity schedule, changes
     FluidDef fluid;            ///< [fluid]: imported flow field, drag, buoyancy (cfddem spec 5)
     AttractionDef attraction;  ///< [attraction]: mutual Newtonian attraction (cfddem spec 5.6)

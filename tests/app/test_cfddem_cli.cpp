@@ -84,9 +84,15 @@ TEST(Cli, CfddemTrioConvertRefusesToOverwrite) {
     EXPECT_NE(again.output.find("s.toml: exists; pass --overwrite to replace it"), std::string::npos)
         << again.output;
     EXPECT_EQ(test::runGranulab("convert trio s.toml --overwrite -q", tmp.path).status, 0);
+    // A TOML scene converts to gsi only (granulab convert reads TOML as the other direction).
     const auto notFolder = test::runGranulab("convert s.toml t.toml", tmp.path);
     EXPECT_EQ(notFolder.status, 2) << notFolder.output;
-    EXPECT_NE(notFolder.output.find("s.toml: not a folder"), std::string::npos) << notFolder.output;
+    EXPECT_NE(notFolder.output.find("t.toml: name the gsi scene to write (.gsi)"), std::string::npos)
+        << notFolder.output;
+    const auto neither = test::runGranulab("convert s.txt t.toml", tmp.path);
+    EXPECT_EQ(neither.status, 2) << neither.output;
+    EXPECT_NE(neither.output.find("s.txt: neither a folder, a .gsi nor a .toml scene"), std::string::npos)
+        << neither.output;
 }
 
 TEST(Cli, CfddemTrioMalformedFilesExitTwoWithFileAndLine) {

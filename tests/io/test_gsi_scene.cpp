@@ -173,20 +173,33 @@ TEST(GsiScene, VibratingWallAndDropSource) {
 }
 
 TEST(GsiScene, WhatIsNotReadIsAnError) {
-    std::string e = errorsOf("Time 0.5 1\n");
-    EXPECT_NE(e.find("s.gsi:3"), std::string::npos) << e;
-    EXPECT_NE(e.find("restart from a gso"), std::string::npos) << e;
-    e = errorsOf(std::string("PARTICLE\n") + kSquare + "PC_Trans3 1 0\n");
-    EXPECT_NE(e.find("s.gsi:10"), std::string::npos) << e;
-    EXPECT_NE(e.find("PC_TRANS3"), std::string::npos) << e;
-    EXPECT_EQ(errorsOf(std::string("PARTICLE\n") + kSquare + "PC_Trans3 0 0\n"), "");
-    e = errorsOf("Steps_Data 0\nSteps_Checkpoint -5\n");
+    std::string e = errorsOf("Steps_Data 0\nSteps_Checkpoint -5\n");
     EXPECT_NE(e.find("s.gsi:3: STEPS_DATA: STEPS_DATA is a number of steps, at least 1"), std::string::npos)
         << e;
     EXPECT_NE(e.find("s.gsi:4"), std::string::npos) << e;
     e = errorsOf("WALL\nOffset 1 0\n");
     EXPECT_NE(e.find("s.gsi:3"), std::string::npos) << e;
     EXPECT_NE(e.find("a WALL needs CORNERS"), std::string::npos) << e;
+    e = errorsOf("Next_Data_Filenumber 0\nNext_Setup_Filenumber 10000\n");
+    EXPECT_NE(e.find("s.gsi:3: NEXT_DATA_FILENUMBER"), std::string::npos) << e;
+    EXPECT_NE(e.find("s.gsi:4: NEXT_SETUP_FILENUMBER"), std::string::npos) << e;
+}
+
+TEST(GsiScene, RestartStateOfAGso) {
+    // TIME t0 t1: the clock starts at t0. The Gear state: ACCELERATION and OMEGA_DOT give
+    // r2 = dt^2/2 a; PC_TRANS3-5 and PC_ROT3-5 are r3..r5 as written (rotations clockwise in gsi).
+    const SceneDef s = scene(std::string("Delta_T 0.01\nTime 0.5 1\nPARTICLE\nID 7\n") + kSquare +
+                             "Acceleration 2 -4\nOmega_Dot 6\nPC_Trans3 1 2\nPC_Trans4 3 4\nPC_Trans5 5 "
+                             "6\nPC_Rot3 7\nPC_Rot4 8\nPC_Rot5 9\n");
+    EXPECT_EQ(s.run.startTime, 0.5);
+    EXPECT_EQ(s.run.endTime, 1.0);
+    ASSERT_EQ(s.particles.size(), 1u);
+    EXPECT_EQ(s.particles[0].gc2dId, 7);
+    const double half = 0.01 * 0.01 / 2;
+    const std::vector<double> expected = {2 * half, 1, 3, 5, -4 * half, 2, 4, 6, -6 * half, -7, -8, -9};
+    EXPECT_EQ(s.particles[0].gear, expected);
+    // A PARTICLE without any of them has no Gear state.
+    EXPECT_TRUE(scene(std::string("PARTICLE\n") + kSquare).particles[0].gear.empty());
 }
 
 TEST(GsiScene, CompressedFileIsReadAsIs) {

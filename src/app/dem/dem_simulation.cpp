@@ -2,7 +2,8 @@
 // The dem engine behind the Simulation seam (app/simulation.hpp; DESIGN.md "The DEM step"):
 // steps of World::step() between output stops, every output period converted to whole steps
 // (dem/step_clock.hpp), series.csv energies and contact counts, VTK snapshots of particles and
-// walls, final.csv of the particle store, the World's checkpoint state.
+// walls, final.csv of the particle store, the World's checkpoint state; gc2d's legacy files
+// (output.gc2d, app/dem/gc2d_files.hpp).
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -12,6 +13,8 @@
 #include "app/dem/dem_contacts.hpp"
 #include "app/dem/dem_engine.hpp"
 #include "app/dem/dem_fluid.hpp"
+#include "app/dem/gc2d_files.hpp"
+#include "app/dem/gc2d_restart.hpp"
 #include "app/dem/particle_series.hpp"
 #include "app/simulation_options.hpp"
 #include "core/binary_io.hpp"
@@ -63,6 +66,11 @@ public:
     }
     std::vector<std::string> warnings() const override {
         std::vector<std::string> w = m_warnings;
+        if (const std::size_t n = m_world.unrestoredContacts(); n > 0)
+            w.push_back(
+                fmt::format("{} of the gci's {} contacts were not restored (unknown ids, or the bodies "
+                            "are not in contact range); ignored, as gc2d ignores unknown pairs",
+                            n, m_scene.rememberedContacts.size()));
         if (m_guardSkips > 0)
             w.push_back(
                 fmt::format("overlap guard skipped {} particle-pair contact evaluations", m_guardSkips));
@@ -83,15 +91,24 @@ public:
         // Default: ten checkpoints over the run, so that a failing run keeps a recent good state.
         p.checkpoints = Schedule::periodic(
             U::Count, every(out.checkpointInterval, std::max<std::int64_t>(1, m_endStep / 10)));
+        // gc2d's gpl lines (output.gc2d_line_interval; 0: none).
+        const Real lineInterval = out.gc2d.enabled ? out.gc2d.lineInterval : 0;
+        p.lines = lineInterval > 0 ? Schedule::periodic(U::Count, every(lineInterval, 1)) : Schedule::never();
         p.progress =
             Schedule::periodic(U::Count, static_cast<double>(std::max<std::int64_t>(64, m_endStep / 200)));
         const std::int64_t benchStep =
             m_scene.run.benchmarkFrom >= 0 ? dem::stepsIn(m_scene.run.benchmarkFrom, m_dt) : -1;
         p.benchmark =
             benchStep >= 0 ? Schedule::once(U::Count, static_cast<double>(benchStep)) : Schedule::never();
+        const auto& gc2d = m_scene.output.gc2d;
+        p.setups = gc2d.enabled && gc2d.setupInterval > 0
+                       ? Schedule::periodic(U::Count, static_cast<double>(setupEvery()))
+                       : Schedule::never();
         p.progressEnd = m_scene.run.endTime;
         return p;
     }
+    /// Steps between gc2d's numbered setup dumps (output.gc2d_setup_interval, STEPS_SETUP).
+    std::int64_t setupEvery() const { return dem::periodSteps(m_scene.output.gc2d.setupInterval, m_dt); }
 
     std::uint32_t start() override {
         if (m_whole) {  // several ranks: every rank reads the flow fields itself
@@ -119,7 +136,9 @@ public:
         const Real interval = m_scene.output.snapshotInterval;
         return std::max<std::int64_t>(1, interval > 0 ? dem::periodSteps(interval, m_dt) : m_endStep);
     }
-    bool wantsContacts() const { return m_scene.output.vtk && m_scene.output.contacts; }
+    /// The contact records of the snapshot steps: for the contact files and for gc2d's gff.
+    bool wantsContacts() const { return writesContactFiles() || m_scene.output.gc2d.enabled; }
+    bool writesContactFiles() const { return m_scene.output.vtk && m_scene.output.contacts; }
     /// Whether the state after step `s` is written as a snapshot (the periodic ones and the end).
     bool endsAtSnapshot(std::int64_t s) const { return s % snapshotEvery() == 0 || s == m_endStep; }
 
@@ -197,6 +216,10 @@ public:
     void openOutputs(const std::string& dir, double resumeTime) override {
         if (m_scene.output.particleSeries)
             m_particleSeries = std::make_unique<ParticleSeries>(dir, resumeTime);
+        if (m_scene.output.gc2d.enabled) {  // the root's; snapshot() writes the walls and grains
+            m_gc2d = std::make_unique<Gc2dFiles>(m_scene, m_world);
+            m_gc2d->open(dir, resumeTime);
+        }
     }
 
     std::vector<std::string> seriesColumns() const override {
@@ -287,18 +310,60 @@ public:
     void snapshot(const std::string& dir, int index, io::PvdWriter& pvd) override {
         if (m_domain && (view(), !worldCommunicator().root())) return;
         if (m_particleSeries) m_particleSeries->flush();
+        if (m_gc2d && !m_gc2d->dump(dir, index) && m_gc2dWarned++ == 0)
+            m_warnings.push_back(fmt::format(
+                "gc2d: the gff of snapshot {} (t = {:.6g} s) holds no contact forces (no contact records "
+                "of that step)",
+                index, m_world.time()));
         if (!m_scene.output.vtk) return;
         io::writeSnapshot(dir, index, m_world.store(), m_world.shapes(), m_world.walls(), m_world.time(),
                           pvd);
         // The records are those of this step's force evaluation (recorded because the step ends at a
         // snapshot); a snapshot at a step that was not recorded has no contact file.
-        if (wantsContacts() && m_world.contactLog().step == m_world.stepIndex())
+        if (writesContactFiles() && m_world.contactLog().step == m_world.stepIndex())
             writeContactSnapshot(dir, index, m_world, pvd);
         if (!m_scene.output.analyses.empty()) analyzeSnapshot(dir, index);
     }
 
+    void writeLine(const std::string& dir) override {
+        (void)dir;
+        if (m_domain && (view(), !worldCommunicator().root())) return;
+        if (m_gc2d) m_gc2d->line();
+    }
+
+    /// gc2d's numbered setup dump <basename>.NNNN.gso/.gco, NNNN = NEXT_SETUP_FILENUMBER + the
+    /// number of earlier dumps (from the step, so that a resumed run numbers on).
+    void writeSetup(const std::string& dir) override {
+        if (m_domain && (view(), !worldCommunicator().root())) return;
+        const auto& gc2d = m_scene.output.gc2d;
+        const std::int64_t start = dem::stepsIn(m_scene.run.startTime, m_dt);  // dumps after the start
+        const std::int64_t number =
+            gc2d.nextSetupNumber + m_world.stepIndex() / setupEvery() - start / setupEvery() - 1;
+        writeRestartFiles(dir + "/" + io::gc2dFileName(gc2d.basename, number, "gso"),
+                          dir + "/" + io::gc2dFileName(gc2d.basename, number, "gco"));
+    }
+    /// gc2d's checkpoint <basename>.gso/.gco (STEPS_CHECKPOINT), overwritten each time.
+    void writeCheckpointFiles(const std::string& dir) override {
+        if (!m_scene.output.gc2d.enabled) return;
+        if (m_domain && (view(), !worldCommunicator().root())) return;
+        const std::string& base = m_scene.output.gc2d.basename;
+        writeRestartFiles(dir + "/" + io::gc2dFileName(base, "gso"),
+                          dir + "/" + io::gc2dFileName(base, "gco"));
+    }
+    void writeRestartFiles(const std::string& gso, const std::string& gco) {
+        try {
+            writeGc2dRestart(gso, gco, m_scene, m_world);
+        } catch (const std::invalid_argument& e) {  // what gsi cannot hold (disks): once
+            if (m_restartWarned++ == 0)
+                m_warnings.push_back(fmt::format("gc2d restart files (gso, gco) not written: {}", e.what()));
+        }
+    }
+
     void writeFinal(const std::string& dir) override {
         if (m_domain && (view(), !worldCommunicator().root())) return;
+        if (m_gc2d && !m_gc2d->picture(dir))  // after the run's warnings: printed here
+            fmt::print(stderr, "warning: gc2d: cannot write {}/{}\n", dir,
+                       io::gc2dFileName(m_scene.output.gc2d.basename, "ps"));
         io::writeFinalCsv(dir + "/final.csv", m_world.store(), m_world.shapes(),
                           model::materialNames(m_scene), model::massModelOf(m_scene.dem.massModel),
                           fluidFinalColumns(m_world));
@@ -616,6 +681,9 @@ private:
     std::string m_fieldsNote;  ///< [fluid]: what the fields are (banner, summary)
     std::string m_inputError;  ///< why a flow field could not be loaded (kSimInputFailed)
     std::unique_ptr<ParticleSeries> m_particleSeries;  ///< output.particle_series (cfddem 6.6)
+    std::unique_ptr<Gc2dFiles> m_gc2d;                 ///< output.gc2d: gc2d's legacy files (root)
+    int m_restartWarned = 0;                           ///< gso/gco that gsi cannot hold
+    int m_gc2dWarned = 0;                              ///< gff snapshots without contact records
     dem::World m_world;  ///< the engine on one rank; on several, the gathered copy for outputs (root)
     std::optional<dem::World> m_whole;           ///< several ranks: the whole scene until it is split
     std::unique_ptr<dem::DomainWorld> m_domain;  ///< several ranks: this rank's part
