@@ -42,7 +42,8 @@ std::string gciPathFor(const std::string& gsiPath) {
     std::string lower = gsiPath;
     for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     for (const char* tail : {".gsi.gz", ".gsi.pl", ".gsi.m4", ".gsi"})
-        if (lower.ends_with(tail)) return gsiPath.substr(0, gsiPath.size() - std::string(tail).size()) + ".gci";
+        if (lower.ends_with(tail))
+            return gsiPath.substr(0, gsiPath.size() - std::string(tail).size()) + ".gci";
     return gsiPath + ".gci";
 }
 
@@ -104,18 +105,22 @@ GciDocument parseGci(const std::string& text, const std::string& path) {
             numberAt(1, open->friction);
         } else if (key == "OLD_AREA") {
             if (numberAt(1, open->oldArea) && open->oldArea < 0)
-                diags.error(loc, key, fmt::format("Old_Area is an area in m^2, allowed [0, inf); got {}",
-                                                  open->oldArea));
+                diags.error(
+                    loc, key,
+                    fmt::format("Old_Area is an area in m^2, allowed [0, inf); got {}", open->oldArea));
         } else {
-            diags.error(loc, w[0],
-                        fmt::format("unknown gci keyword '{}'{}; allowed: COLLISION, Particles, Summ_Friction, "
-                                    "Old_Area, END_OF_FILE",
-                                    w[0], didYouMean(key, keywords)));
+            diags.error(
+                loc, w[0],
+                fmt::format("unknown gci keyword '{}'{}; allowed: COLLISION, Particles, Summ_Friction, "
+                            "Old_Area, END_OF_FILE",
+                            w[0], didYouMean(key, keywords)));
         }
     }
-    if (lineNo < 2) diags.error({path, 1, 1}, "PARAMETER", "a gci has at least the version and identification lines");
+    if (lineNo < 2)
+        diags.error({path, 1, 1}, "PARAMETER", "a gci has at least the version and identification lines");
     for (std::size_t k = 0; k < doc.contacts.size(); ++k)
-        if (!seen[k]) diags.error(doc.contacts[k].loc, "COLLISION", "a COLLISION section needs `Particles id1 id2`");
+        if (!seen[k])
+            diags.error(doc.contacts[k].loc, "COLLISION", "a COLLISION section needs `Particles id1 id2`");
     diags.throwIfAny();
     return doc;
 }

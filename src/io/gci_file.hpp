@@ -31,6 +31,7 @@ GciDocument parseGci(const std::string& text, const std::string& path);
 std::string gciPathFor(const std::string& gsiPath);
 
 /// gco text of `contacts` under `identification`; numbers round-trip exact.
-std::string gcoText(const std::string& identification, const std::vector<model::RememberedContactDef>& contacts);
+std::string gcoText(const std::string& identification,
+                    const std::vector<model::RememberedContactDef>& contacts);
 
 }  // namespace granulab::io

@@ -50,13 +50,15 @@ struct ScriptResult {
 ScriptResult runProgram(const std::vector<std::string>& argv, const std::string& path) {
     int outPipe[2];
     if (pipe(outPipe) != 0)
-        throw SceneError(makeDiagnostic(path, 0, "", fmt::format("cannot run the script: {}", std::strerror(errno))));
+        throw SceneError(
+            makeDiagnostic(path, 0, "", fmt::format("cannot run the script: {}", std::strerror(errno))));
     char errName[] = "/tmp/granulab-script-XXXXXX";
     const int errFd = mkstemp(errName);
     if (errFd >= 0) unlink(errName);
     const pid_t pid = fork();
     if (pid < 0)
-        throw SceneError(makeDiagnostic(path, 0, "", fmt::format("cannot run the script: {}", std::strerror(errno))));
+        throw SceneError(
+            makeDiagnostic(path, 0, "", fmt::format("cannot run the script: {}", std::strerror(errno))));
     if (pid == 0) {
         dup2(outPipe[1], STDOUT_FILENO);
         if (errFd >= 0) dup2(errFd, STDERR_FILENO);
@@ -115,7 +117,8 @@ model::SceneDef readGsiScript(const std::string& path, const std::vector<std::st
                 path + " -P \"0.1 20\""));
     struct stat st {};
     if (stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode))
-        throw SceneError(makeDiagnostic(path, 0, "", "cannot open the generator script (missing or not a file)"));
+        throw SceneError(
+            makeDiagnostic(path, 0, "", "cannot open the generator script (missing or not a file)"));
     std::vector<std::string> argv;
     const std::string l = lower(path);
     const std::string self = path.find('/') == std::string::npos ? "./" + path : path;
@@ -132,10 +135,9 @@ model::SceneDef readGsiScript(const std::string& path, const std::vector<std::st
     if (r.status != 0) {
         std::string err = r.err.size() > 2000 ? "..." + r.err.substr(r.err.size() - 2000) : r.err;
         while (!err.empty() && (err.back() == '\n' || err.back() == '\r')) err.pop_back();
-        throw SceneError(makeDiagnostic(
-            path, 0, "",
-            fmt::format("the generator script failed (exit status {}){}{}", r.status, err.empty() ? "" : ":\n",
-                        err)));
+        throw SceneError(makeDiagnostic(path, 0, "",
+                                        fmt::format("the generator script failed (exit status {}){}{}",
+                                                    r.status, err.empty() ? "" : ":\n", err)));
     }
     // Errors name lines of the generated text, as gc2d's did.
     return gsiToScene(parseGsi(r.out, path + " (output)"));

@@ -387,6 +387,8 @@ private:
                 m_diags.error(
                     loc(index), "CORNERS",
                     comment ? std::string("a CORNERS block allows no comments (only 'x y' lines up to END)")
+                    : x     ? fmt::format("'{}' is not a corner 'x y': two numbers [m]",
+                                          trimRight(m_lines[index]).substr(0, 60))
                             : fmt::format("'{}' is not a corner 'x y' (CORNERS at line {} needs END)",
                                           trimRight(m_lines[index]).substr(0, 60), e.loc.line));
                 if (!comment && !x) {  // a keyword: the block lacks its END

@@ -80,7 +80,8 @@ Real stepsOf(Real interval, Real dt, const char* key, Problems& problems) {
 }
 
 const model::ShapeDef* shapeNamed(const model::SceneDef& sc, const std::string& name) {
-    const auto it = std::find_if(sc.shapes.begin(), sc.shapes.end(), [&](const auto& s) { return s.name == name; });
+    const auto it =
+        std::find_if(sc.shapes.begin(), sc.shapes.end(), [&](const auto& s) { return s.name == name; });
     return it == sc.shapes.end() ? nullptr : &*it;
 }
 
@@ -88,7 +89,8 @@ void general(const model::SceneDef& sc, GsiText& g, Problems& problems) {
     const auto& dem = sc.dem;
     const model::DemDef dd;
     problems.check(sc.run.engine == "dem" && sc.run.dimension == 2, "run.engine must be the 2D dem");
-    problems.check(dem.integrator == "gear", fmt::format("dem.integrator = \"{}\" (gsi: gear)", dem.integrator));
+    problems.check(dem.integrator == "gear",
+                   fmt::format("dem.integrator = \"{}\" (gsi: gear)", dem.integrator));
     problems.check(dem.broadPhase == "sort_and_sweep",
                    fmt::format("dem.broad_phase = \"{}\" (gsi: sort_and_sweep)", dem.broadPhase));
     problems.check(dem.massModel == "disk", "dem.mass_model = \"sphere\" (gsi: areal masses)");
@@ -110,9 +112,10 @@ void general(const model::SceneDef& sc, GsiText& g, Problems& problems) {
                        law->damping == "gamma" && law->tangential == "gc2d" && law->rolling == "none" &&
                        law->params.size() == 4 && law->params.count("E") && law->params.count("cohesion") &&
                        law->params.count("gamma") && law->params.count("mu");
-    problems.check(lawOk,
-                   "[[contact]]: gsi has one law for every pair, [\"*\", \"*\"] normal \"area\" (E, cohesion), "
-                   "damping \"gamma\" (gamma), tangential \"gc2d\" (mu), no rolling");
+    problems.check(
+        lawOk,
+        "[[contact]]: gsi has one law for every pair, [\"*\", \"*\"] normal \"area\" (E, cohesion), "
+        "damping \"gamma\" (gamma), tangential \"gc2d\" (mu), no rolling");
 
     g.key("DELTA_T", {dem.dt});
     g.key("TIME", {sc.run.startTime, sc.run.endTime});
@@ -125,8 +128,9 @@ void general(const model::SceneDef& sc, GsiText& g, Problems& problems) {
     const auto& v = sc.machines.gravity;
     if (v.present) {
         problems.check(dem.gravity == Vec2{0, 0}, "dem.gravity beside a [gravity] schedule");
-        problems.check(v.direction1 == -kPi / 2 && v.direction2 == -kPi / 2 && v.tilt1 == v.t1 && v.tilt2 == v.t2,
-                       "[gravity] direction or tilt_window (gsi's variable g points down)");
+        problems.check(
+            v.direction1 == -kPi / 2 && v.direction2 == -kPi / 2 && v.tilt1 == v.t1 && v.tilt2 == v.t2,
+            "[gravity] direction or tilt_window (gsi's variable g points down)");
         g.key("G", {v.g1, v.g2});
         g.key("G_TIME", {v.t1, v.t2});
         g.key("G_PARAMETER", {v.steps, v.ramp});
@@ -142,8 +146,9 @@ void general(const model::SceneDef& sc, GsiText& g, Problems& problems) {
         g.key("HEAT_SLOPE", {h.slope});
     }
     const auto& out = sc.output;
-    problems.check(out.snapshotInterval == out.seriesInterval,
-                   "output.snapshot_interval differs from output.series_interval (gsi: STEPS_DATA sets both)");
+    problems.check(
+        out.snapshotInterval == out.seriesInterval,
+        "output.snapshot_interval differs from output.series_interval (gsi: STEPS_DATA sets both)");
     g.key("STEPS_DATA", {stepsOf(out.seriesInterval, dem.dt, "output.series_interval", problems)});
     g.key("STEPS_CHECKPOINT",
           {stepsOf(out.checkpointInterval, dem.dt, "output.checkpoint_interval", problems)});
@@ -160,10 +165,12 @@ void general(const model::SceneDef& sc, GsiText& g, Problems& problems) {
 void wall(const model::WallDef& w, std::size_t k, GsiText& g, Problems& problems) {
     const model::WallDef d;
     const std::string name = fmt::format("wall {} ('{}')", k, w.name);
-    problems.check(w.kind == "polygon" && w.closed, name + ": gsi walls are convex polygons (kind \"polygon\")");
+    problems.check(w.kind == "polygon" && w.closed,
+                   name + ": gsi walls are convex polygons (kind \"polygon\")");
     problems.check(w.material == "wall", name + ": material must be \"wall\"");
-    problems.check(w.velocity == d.velocity && w.omega == 0 && !w.pivot && w.pistonGain == 0 && w.pistonFrom == 0,
-                   name + ": velocity, omega, pivot, piston_gain and piston_from have no gsi keyword");
+    problems.check(
+        w.velocity == d.velocity && w.omega == 0 && !w.pivot && w.pistonGain == 0 && w.pistonFrom == 0,
+        name + ": velocity, omega, pivot, piston_gain and piston_from have no gsi keyword");
     g.line("");
     g.line("WALL");
     if (w.gc2dId >= 0) g.key("ID", {static_cast<Real>(w.gc2dId)});
@@ -199,9 +206,11 @@ void particle(const model::SceneDef& sc, std::size_t k, GsiText& g, Problems& pr
     const model::ParticleDef& p = sc.particles[k];
     const model::ShapeDef* shape = shapeNamed(sc, p.shape);
     const std::string name = fmt::format("particle {}", k);
-    problems.check(shape && shape->kind == "polygon" && shape->rotation == 0 && shape->rotationMode == "const",
-                   name + ": gsi particles are polygons given by their corners (a [[shape]] of kind "
-                          "\"polygon\" without rotation)");
+    problems.check(
+        shape && shape->kind == "polygon" && shape->rotation == 0 && shape->rotationMode == "const",
+        name +
+            ": gsi particles are polygons given by their corners (a [[shape]] of kind "
+            "\"polygon\" without rotation)");
     problems.check(p.material == "grain", name + ": material must be \"grain\"");
     g.line("");
     g.line("PARTICLE");
@@ -260,8 +269,9 @@ void block(const model::SceneDef& sc, std::size_t k, GsiText& g, Problems& probl
     problems.check(b.material == "grain", name + ": material must be \"grain\"");
     problems.check(b.spacing == d.spacing && !b.origin && b.count == d.count && b.temperature == 0 &&
                        b.velocity == d.velocity && b.jitterFraction == d.jitterFraction,
-                   name + ": spacing, origin, count, temperature, velocity and jitter_fraction have no gsi "
-                          "keyword");
+                   name +
+                       ": spacing, origin, count, temperature, velocity and jitter_fraction have no gsi "
+                       "keyword");
     g.line("");
     g.line("GENERATE_BLOCK");
     g.key("X_RANGE", {b.xmin, b.xmax});
@@ -312,9 +322,9 @@ std::string sceneToGsi(const model::SceneDef& sc, const std::string& identificat
     for (std::size_t k = 0; k < sc.blocks.size(); ++k) block(sc, k, g, problems);
     for (std::size_t k = 0; k < sc.machines.sources.size(); ++k) source(sc, k, g, problems);
     for (const auto& s : sc.springs)
-        problems.check(s.particle >= 0 && s.particle < static_cast<std::int64_t>(sc.particles.size()),
-                       fmt::format("spring on particle {}: gsi pulls only PARTICLEs, not generated grains",
-                                   s.particle));
+        problems.check(
+            s.particle >= 0 && s.particle < static_cast<std::int64_t>(sc.particles.size()),
+            fmt::format("spring on particle {}: gsi pulls only PARTICLEs, not generated grains", s.particle));
     const auto& m = sc.machines;
     problems.check(sc.heaps.empty(), "[[heap]] (gsi: generate it with a script, docs/coming-from-gc2d.md)");
     problems.check(m.drums.empty(), "[[drum]] (gsi: generate it with a script, docs/coming-from-gc2d.md)");

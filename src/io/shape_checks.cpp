@@ -177,11 +177,13 @@ void checkShapes(const model::SceneDef& sc, Diagnostics& d, std::vector<std::str
         if (shape.kind != "grain" && shape.rotationMode == "const") continue;
         const Real rmax = model::maxPlacementRadius(shape);
         if (rmax > 0 && 2 * rmax > spacing)
-            d.error(b.loc, key + (gc2d ? ".grid" : ".spacing"),
-                    fmt::format(
-                        "{} {:.6g} m is smaller than twice the largest circumradius {:.6g} m of shape '{}': "
-                        "neighbours could overlap",
-                        gc2d ? "the nearest-site distance of grid" : "spacing", spacing, 2 * rmax, b.shape));
+            d.error(
+                b.loc, key + (gc2d ? ".grid" : ".spacing"),
+                fmt::format(
+                    "{} {:.6g} m is smaller than {:.6g} m, twice the largest circumradius {:.6g} m of shape "
+                    "'{}': neighbours could overlap",
+                    gc2d ? "the nearest-site distance of grid" : "spacing", spacing, 2 * rmax, rmax,
+                    b.shape));
     }
     for (std::size_t k = 0; k < sc.heaps.size() && polygonUser.empty(); ++k)  // shapes: checkHeap()
         if (sc.heaps[k].shape != "disk" || sc.heaps[k].size.x != 0 || sc.heaps[k].size.y != 0)

@@ -239,8 +239,9 @@ TEST(Gc2dOutputsCli, LockFileRefusesUnlessOverwrittenOrIgnoredAndAResumeAppends)
     EXPECT_NE(locked.output.find("pair.glk"), std::string::npos) << locked.output;
     EXPECT_NE(locked.output.find("--ignore-lock"), std::string::npos) << locked.output;
     // --overwrite removes the earlier run's files, its lock among them (an explicit consent).
-    for (const char* args : {"run pair.toml --out out -q --overwrite", "run pair.toml --out out -q --overwrite -l",
-                             "run pair.toml --out out -q --overwrite --ignore-lock"}) {
+    for (const char* args :
+         {"run pair.toml --out out -q --overwrite", "run pair.toml --out out -q --overwrite -l",
+          "run pair.toml --out out -q --overwrite --ignore-lock"}) {
         const auto passed = test::runGranulab(args, tmp.path, 120);
         EXPECT_EQ(passed.status, 0) << args << "\n" << passed.output;
     }

@@ -17,9 +17,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Random heptagons (2 mm semi-axes, turned at random) on a 5.5 mm FCC grid dropped onto a floor between two walls:
-// by t = 0.1 s they rest on each other with lasting contacts (springs and overlap areas).
-// dt = 5e-6 s; a setup dump every 20000 steps (t = 0.1 s).
+// Random heptagons (2 mm semi-axes, turned at random) on a 5.5 mm FCC grid dropped onto a floor between two
+// walls: by t = 0.1 s they rest on each other with lasting contacts (springs and overlap areas). dt = 5e-6 s;
+// a setup dump every 20000 steps (t = 0.1 s).
 const char* kPile = R"(PARAMETER v1.4
 restart test pile
 Delta_T 5e-6
@@ -135,7 +135,8 @@ TEST(Cli, Gc2dRestartChecksTheIdentificationAndTakesGeneralChanges) {
     // A gci of another gsi: its line 2 differs.
     test::writeText(tmp.path / "r.gsi", gso);
     const std::size_t line2 = gco.find('\n') + 1;
-    test::writeText(tmp.path / "r.gci", gco.substr(0, line2) + "another run\n" + gco.substr(gco.find('\n', line2) + 1));
+    test::writeText(tmp.path / "r.gci",
+                    gco.substr(0, line2) + "another run\n" + gco.substr(gco.find('\n', line2) + 1));
     run = test::runGranulab("run r.gsi --out mismatch -q", tmp.path, 60);
     EXPECT_EQ(run.status, 2) << run.output;
     EXPECT_NE(run.output.find("r.gci:2"), std::string::npos) << run.output;

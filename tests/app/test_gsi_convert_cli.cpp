@@ -22,9 +22,9 @@ const std::string kCorpus = std::string(GRANULAB_SOURCE_DIR) + "/tests/data/gsi/
 TEST(Cli, GsiConvertRoundTripsRunTheSame) {
     // Scenes with every kind of object: sources (REL and ABS), a DRAG spring, variable g, HEAT_
     // scaling, a piston, vibrating walls, belts, both lattices with jitter.
-    const std::vector<std::string> scenes = {"drop_pile",     "pulled_block", "gravity_step", "heat_default_time",
-                                             "piston_down",   "vib_walls",    "belt_conveyor",
-                                             "block_rect_jitter", "sources_abs_rel"};
+    const std::vector<std::string> scenes = {"drop_pile",         "pulled_block",      "gravity_step",
+                                             "heat_default_time", "piston_down",       "vib_walls",
+                                             "belt_conveyor",     "block_rect_jitter", "sources_abs_rel"};
     test::ScratchDir tmp;
     for (const std::string& name : scenes) {
         SCOPED_TRACE(name);

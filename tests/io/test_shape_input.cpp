@@ -217,9 +217,10 @@ TEST(ShapeInput, ShapeReferencesAndRadii) {
            "[[shape]]\nname = \"spun\"\nkind = \"regular\"\ncorner_count = 6\nradius = 0.05\nrotation_mode = "
            "\"equal\"\n"
            "[[block]]\nshape = \"spun\"\nregion = [0.0, 0.0, 1.0, 1.0]\nspacing = 0.09\nmaterial = \"g\"\n";
-    EXPECT_HAS(errorsOf(text),
-               "block[0].spacing: spacing 0.09 m is smaller than twice the largest circumradius 0.1 m of "
-               "shape 'spun'");
+    EXPECT_HAS(
+        errorsOf(text),
+        "block[0].spacing: spacing 0.09 m is smaller than 0.1 m, twice the largest circumradius 0.05 m "
+        "of shape 'spun'");
 }
 
 TEST(ShapeInput, ShapeKeysAndRanges) {
