@@ -147,12 +147,15 @@ int runSimulation(Simulation& sim, const model::SceneDef& scene, const RunContex
     std::string lastCheckpoint =
         "No checkpoint was written before the failure (see output.checkpoint_interval).";
     installInterruptHandlers();  // from here on a signal stops the run cleanly (pre-run included)
+    // The scene's warnings were printed with it; what start() and the t = 0 outputs raise (an
+    // engine's set-up, e.g. a gc2d restart's unknown contacts) is printed at the end with the rest.
+    const std::size_t warningsBefore = sim.warnings().size();
     if (resumed) {
         book = resume(sim, ctx, lastCheckpoint);
     } else if (std::uint32_t started = sim.start(); started != kSimOk || interruptRequested()) {
         // A pre-run that stalled or was interrupted: nothing to resume from.
         if (interruptRequested()) started = kSimInterrupted;
-        LoopOutcome outcome{started, {}, lastCheckpoint, sim.warnings().size(), false};
+        LoopOutcome outcome{started, {}, lastCheckpoint, warningsBefore, false};
         return finishRun(sim, ctx, outcome);
     }
     for (Trigger* t : {&end, &series, &snapshots, &checkpoints, &lines, &setups, &progressTick, &benchmark})
@@ -194,7 +197,6 @@ int runSimulation(Simulation& sim, const model::SceneDef& scene, const RunContex
         writeSnapshot();
         if (lines.next() < std::numeric_limits<double>::infinity()) sim.writeLine(ctx.dir);
     }
-    const std::size_t warningsBefore = sim.warnings().size();
     if (!ctx.quiet && root) fmt::print(stderr, "{}\n", sim.banner(ctx.dir));
 
     const auto position = [&] {

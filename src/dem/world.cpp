@@ -224,13 +224,14 @@ void World::initialize() {
     // so that its forces hold the springs, and again after it, since the evaluation's bookkeeping
     // (Old_Area = the area now; a new contact's area) must not replace the state of the step that
     // wrote them (the areas of that step's predicted positions; pairs not listed had none).
+    const bool restart = !m_config.rememberedContacts.empty();
     std::vector<RememberedContact> remembered = rememberedInSlots();
-    if (!remembered.empty()) restoreContacts(remembered);
+    if (restart) restoreContacts(remembered);
     // Set-up evaluation: nothing has moved yet, so no tangential displacement (drift = none).
     const BodyForces body = bodyForcesAt(m_step);
     evaluateForces(body, DriftVelocities{}, false);
     evaluateFieldForces(body);
-    if (!remembered.empty()) {
+    if (restart) {
         for (ContactList* l : {&m_list.pairs, &m_list.wallPairs}) {  // what the gci does not list: new
             std::fill(l->xi.begin(), l->xi.end(), 0.0);
             std::fill(l->areaOld.begin(), l->areaOld.end(), 0.0);

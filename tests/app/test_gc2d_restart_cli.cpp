@@ -142,6 +142,15 @@ TEST(Cli, Gc2dRestartChecksTheIdentificationAndTakesGeneralChanges) {
     EXPECT_NE(run.output.find("r.gci:2"), std::string::npos) << run.output;
     EXPECT_NE(run.output.find("does not match line 2"), std::string::npos) << run.output;
 
+    // A pair of ids the scene does not have is ignored with a warning, as gc2d ignores it.
+    test::writeText(tmp.path / "r.gci", gco.substr(0, gco.find('\n', line2) + 1) +
+                                            "COLLISION\nParticles 9999 10000\nSumm_Friction 1\nOld_Area 0\n"
+                                            "END_OF_FILE\n");
+    run = test::runGranulab("run r.gsi --out unknown", tmp.path, 240);
+    EXPECT_EQ(run.status, 0) << run.output;
+    EXPECT_NE(run.output.find("1 of the gci's 1 contacts were not restored"), std::string::npos)
+        << run.output;
+
     // gc2d's restart with changed GENERAL parameters: friction off and a stronger g.
     test::writeText(tmp.path / "r.gci", gco);
     std::string changed = test::replaceAll(gso, "MUE_STATISCH 0.6", "MUE_STATISCH 0");
