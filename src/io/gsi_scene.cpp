@@ -257,7 +257,8 @@ private:
         w.offset = r.pair("OFFSET", {0, 0});
         w.angle = -r.number("ANGLE", 0);  // gc2d turns clockwise
         w.material = "wall";
-        if (const GsiEntry* id = r.entry("ID")) w.gc2dId = static_cast<std::int64_t>(id->numbers[0]);
+        if (const GsiEntry* id = r.entry("ID"))
+            w.gc2dId = static_cast<std::int64_t>(std::clamp<Real>(id->numbers[0], -1, 1e15));
         w.surfaceVelocity = r.pair("VELOCITY", {0, 0});
         if (const Real force = r.number("PISTON_FORCE", 0); force != 0) {
             w.pistonForce = force;
@@ -295,7 +296,8 @@ private:
         p.material = "grain";
         p.loc = r.object().loc;
         p.gear = std::move(gear);
-        if (const GsiEntry* id = r.entry("ID")) p.gc2dId = static_cast<std::int64_t>(id->numbers[0]);
+        if (const GsiEntry* id = r.entry("ID"))
+            p.gc2dId = static_cast<std::int64_t>(std::clamp<Real>(id->numbers[0], -1, 1e15));
         m_scene.shapes.push_back(std::move(shape));
         m_scene.particles.push_back(std::move(p));
         if (r.firstOf("DRAG_")) {
@@ -344,8 +346,10 @@ private:
         s.size = r.pair("PART_SIZE", size);
         s.sizeVariation = r.number("PART_VAR_SIZE", sizeVariation);
         s.sizeMode = r.choice("RANDOM_SIZE", "const");
-        s.cornerCount = static_cast<std::int64_t>(r.number("PART_NUM_CORNERS", corners));
-        s.cornerVariation = static_cast<std::int64_t>(r.number("PART_VAR_CORNERS", 2));
+        // Clamped before the cast (a huge count is then refused by the shape checks, not undefined).
+        const auto whole = [](Real v) { return static_cast<std::int64_t>(std::clamp<Real>(v, -1e15, 1e15)); };
+        s.cornerCount = whole(r.number("PART_NUM_CORNERS", corners));
+        s.cornerVariation = whole(r.number("PART_VAR_CORNERS", 2));
         s.cornerCountMode = r.choice("RANDOM_NUM_CORNERS", "const");
         s.cornerAngles = r.choice("PART_RANDOM_POS_CORNERS", "regular");
         s.rotation = -r.number("PART_ROT", 0);  // clockwise in gc2d
