@@ -134,7 +134,7 @@ constexpr double kX2 = 1.4999999995343387;    // 1.5 - w
 
 }  // namespace
 
-TEST(Gc2dOutputsCli, TwoGrainSceneColumnsMatchTheHandComputation) {
+TEST(Cli, Gc2dOutputsTwoGrainSceneColumnsMatchTheHandComputation) {
     test::ScratchDir tmp;
     test::writeText(tmp.path / "pair.toml", kPairScene);
     const auto run = test::runGranulab("run pair.toml --out out -q", tmp.path, 120);
@@ -228,7 +228,7 @@ TEST(Gc2dOutputsCli, TwoGrainSceneColumnsMatchTheHandComputation) {
     EXPECT_EQ(gpl[2][0], 2e-8);
 }
 
-TEST(Gc2dOutputsCli, LockFileRefusesUnlessOverwrittenOrIgnoredAndAResumeAppends) {
+TEST(Cli, Gc2dOutputsLockFileRefusesUnlessOverwrittenOrIgnoredAndAResumeAppends) {
     test::ScratchDir tmp;
     test::writeText(tmp.path / "pair.toml", kPairScene);
     ASSERT_EQ(test::runGranulab("run pair.toml --out out -q", tmp.path, 120).status, 0);
@@ -269,7 +269,7 @@ TEST(Gc2dOutputsCli, LockFileRefusesUnlessOverwrittenOrIgnoredAndAResumeAppends)
     for (std::size_t k = 1; k < gpl.size(); ++k) EXPECT_GT(gpl[k][0], gpl[k - 1][0]);
 }
 
-TEST(Gc2dOutputsCli, GsiSceneWritesFilesNamedAfterBasename) {
+TEST(Cli, Gc2dOutputsGsiSceneWritesFilesNamedAfterBasename) {
     test::ScratchDir tmp;
     // The pulled block of tests/data/gsi (a spring, a belt wall), 20 steps, a dump every 10 and
     // a gpl line every 5; BASENAME's folder part is dropped (the files go into --out).
@@ -318,7 +318,7 @@ TEST(Gc2dOutputsCli, GsiSceneWritesFilesNamedAfterBasename) {
     EXPECT_EQ(weights, 1);
 }
 
-TEST(Gc2dOutputsCli, DiskScenesAreRefused) {
+TEST(Cli, Gc2dOutputsDiskScenesAreRefused) {
     test::ScratchDir tmp;
     const std::string disks = R"(
 [run]
