@@ -11,6 +11,7 @@
 
 #include "app/engine_table.hpp"
 #include "app/exit_codes.hpp"
+#include "core/ascii_case.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/cfddem_files.hpp"
@@ -165,9 +166,7 @@ enum class Conversion { CfddemToToml, GsiToToml, TomlToGsi };
 Conversion conversionOf(const ConvertOptions& opt) {
     std::error_code ec;
     const auto endsWith = [](const std::string& s, const char* tail) {
-        std::string l = s;
-        for (char& c : l) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-        return l.ends_with(tail);
+        return asciiLower(s).ends_with(tail);
     };
     const std::string usage =
         "granulab convert reads a cfddem folder or a .gsi file and writes a .toml scene, or reads a "

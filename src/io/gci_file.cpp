@@ -10,17 +10,13 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/ascii_case.hpp"
 #include "core/suggest.hpp"
 #include "io/gsi_writer.hpp"
 
 namespace granulab::io {
 
 namespace {
-
-std::string upper(std::string s) {
-    for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    return s;
-}
 
 std::vector<std::string> words(const std::string& line) {
     std::vector<std::string> out;
@@ -39,8 +35,7 @@ bool number(const std::string& w, Real& v) {
 }  // namespace
 
 std::string gciPathFor(const std::string& gsiPath) {
-    std::string lower = gsiPath;
-    for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    const std::string lower = asciiLower(gsiPath);
     for (const char* tail : {".gsi.gz", ".gsi.pl", ".gsi.m4", ".gsi"})
         if (lower.ends_with(tail))
             return gsiPath.substr(0, gsiPath.size() - std::string(tail).size()) + ".gci";
@@ -64,7 +59,7 @@ GciDocument parseGci(const std::string& text, const std::string& path) {
         const SourceLoc loc{path, lineNo, 1};
         if (lineNo == 1) {
             const auto w = words(line);
-            if (w.size() < 2 || upper(w[0]) != "PARAMETER" || w[1] != "v1.4")
+            if (w.size() < 2 || asciiUpper(w[0]) != "PARAMETER" || w[1] != "v1.4")
                 diags.error(loc, "PARAMETER", "a gci starts with the version line `PARAMETER v1.4`");
             continue;
         }
@@ -76,7 +71,7 @@ GciDocument parseGci(const std::string& text, const std::string& path) {
         }
         const auto w = words(line);
         if (w.empty() || w[0].front() == '#' || w[0].front() == '$') continue;
-        const std::string key = upper(w[0]);
+        const std::string key = asciiUpper(w[0]);
         const auto numberAt = [&](std::size_t k, Real& v) {
             if (w.size() > k && number(w[k], v)) return true;
             diags.error(loc, key,

@@ -14,6 +14,7 @@
 #include <sstream>
 #include <system_error>
 
+#include "core/ascii_case.hpp"
 #include "io/gci_file.hpp"
 
 namespace granulab::io {
@@ -22,12 +23,6 @@ namespace {
 
 constexpr Real kGc2dInfinity = 4294967295.0;  ///< gc2d's BIG_NUMBER, 2^32 - 1 (gstd.h)
 constexpr Real kArealDensity = 5000;          ///< [kg/m^2] the thesis's grains (spec 3.9)
-
-std::string lower(std::string s) {
-    std::transform(s.begin(), s.end(), s.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return s;
-}
 
 /// Reads the entries of one object with their gc2d defaults.
 class ObjectReader {
@@ -52,7 +47,7 @@ public:
     }
     std::string choice(std::string_view key, std::string fallback) const {
         const GsiEntry* e = entry(key);
-        return e ? lower(e->text) : fallback;
+        return e ? asciiLower(e->text) : fallback;
     }
     /// The line of `key`, else the object's line.
     SourceLoc loc(std::string_view key) const {
@@ -406,7 +401,7 @@ private:
 }  // namespace
 
 bool isGsiPath(const std::string& path) {
-    const std::string l = lower(path);
+    const std::string l = asciiLower(path);
     return l.ends_with(".gsi") || l.ends_with(".gsi.gz");
 }
 
@@ -416,7 +411,7 @@ model::SceneDef gsiToScene(const GsiDocument& doc) {
 
 model::SceneDef readGsiFile(const std::string& path) {
     std::string text;
-    if (lower(path).ends_with(".gz")) {  // gzip (gc2d: gunzip first); zlib reads it directly
+    if (asciiLower(path).ends_with(".gz")) {  // gzip (gc2d: gunzip first); zlib reads it directly
         gzFile in = gzopen(path.c_str(), "rb");
         if (!in)
             throw SceneError(

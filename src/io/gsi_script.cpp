@@ -13,6 +13,7 @@
 #include <cstring>
 #include <sstream>
 
+#include "core/ascii_case.hpp"
 #include "core/error.hpp"
 #include "io/gsi_scene.hpp"
 #include "io/gsi_syntax.hpp"
@@ -20,11 +21,6 @@
 namespace granulab::io {
 
 namespace {
-
-std::string lower(std::string s) {
-    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return s;
-}
 
 /// Reads everything from `fd` until end of file.
 std::string drain(int fd) {
@@ -91,7 +87,7 @@ ScriptResult runProgram(const std::vector<std::string>& argv, const std::string&
 }  // namespace
 
 bool isGsiScript(const std::string& path) {
-    const std::string l = lower(path);
+    const std::string l = asciiLower(path);
     if (l.ends_with(".gsi.pl") || l.ends_with(".gsi.py") || l.ends_with(".gsi.sh")) return true;
     if (l.ends_with(".toml") || isGsiPath(path)) return false;
     struct stat st {};
@@ -120,7 +116,7 @@ model::SceneDef readGsiScript(const std::string& path, const std::vector<std::st
         throw SceneError(
             makeDiagnostic(path, 0, "", "cannot open the generator script (missing or not a file)"));
     std::vector<std::string> argv;
-    const std::string l = lower(path);
+    const std::string l = asciiLower(path);
     const std::string self = path.find('/') == std::string::npos ? "./" + path : path;
     if (l.ends_with(".pl"))
         argv = {"perl", path};

@@ -12,6 +12,7 @@
 #include <optional>
 #include <span>
 
+#include "core/ascii_case.hpp"
 #include "core/suggest.hpp"
 
 namespace granulab::io {
@@ -178,13 +179,6 @@ const ObjectSpec& specOf(GsiObjectKind kind) noexcept {
     return kObjects[static_cast<std::size_t>(kind)];
 }
 
-std::string upper(std::string_view s) {
-    std::string u(s);
-    std::transform(u.begin(), u.end(), u.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
-    return u;
-}
-
 /// Blank-separated words of a line (spaces and tabs).
 std::vector<std::string_view> words(std::string_view line) {
     std::vector<std::string_view> out;
@@ -243,7 +237,7 @@ public:
                 m_doc.echoes.emplace_back(t.substr(std::min(t.find_first_not_of(" \t"), t.size())));
                 continue;
             }
-            const std::string key = upper(w.front());
+            const std::string key = asciiUpper(w.front());
             if (key == "END_OF_FILE") break;
             if (startsObject(key, index)) continue;
             entry(key, w, index);
@@ -266,7 +260,7 @@ private:
     void header() {
         const std::string_view first = m_lines.empty() ? std::string_view{} : trimRight(m_lines[0]);
         const auto w = words(first);
-        if (w.size() < 2 || upper(w[0]) != "PARAMETER" || upper(w[1]) != kVersion)
+        if (w.size() < 2 || asciiUpper(w[0]) != "PARAMETER" || asciiUpper(w[1]) != kVersion)
             m_diags.error(loc(0), "PARAMETER",
                           fmt::format("the first line of a gsi file is 'PARAMETER v1.4' (the version check); "
                                       "found '{}'",
@@ -333,7 +327,7 @@ private:
                 break;
             case Param::Choice: {
                 std::vector<std::string> allowed(spec->choices.begin(), spec->choices.end());
-                e.text = w.size() > 1 ? upper(w[1]) : "";
+                e.text = w.size() > 1 ? asciiUpper(w[1]) : "";
                 if (std::find(allowed.begin(), allowed.end(), e.text) == allowed.end())
                     m_diags.error(e.loc, key,
                                   fmt::format("'{}' is not allowed{}; allowed: {}", w.size() > 1 ? w[1] : "",
@@ -376,7 +370,7 @@ private:
             if (tooLong(index)) continue;
             const auto w = words(trimRight(m_lines[index]));
             if (w.empty()) continue;
-            if (upper(w.front()) == "END") {
+            if (asciiUpper(w.front()) == "END") {
                 e.cornersEnd = loc(index);
                 return;
             }
@@ -405,7 +399,7 @@ private:
     /// Skips the block of an unknown CORNERS (already reported).
     void skipBlock() {
         while (m_next < m_lines.size())
-            if (const auto w = words(m_lines[m_next++]); !w.empty() && upper(w.front()) == "END") return;
+            if (const auto w = words(m_lines[m_next++]); !w.empty() && asciiUpper(w.front()) == "END") return;
     }
 
     std::string m_path;

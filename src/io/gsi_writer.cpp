@@ -8,6 +8,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/ascii_case.hpp"
 #include "core/float_preimage.hpp"
 
 namespace granulab::io {
@@ -16,11 +17,6 @@ namespace {
 
 constexpr Real kGc2dInfinity = 4294967295.0;  ///< gc2d's BIG_NUMBER (gstd.h): "never"
 constexpr Real kArealDensity = 5000;          ///< [kg/m^2] the grains of a gsi scene (io/gsi_scene.cpp)
-
-std::string upper(std::string s) {
-    for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    return s;
-}
 
 /// A time that gc2d writes as BIG_NUMBER when it means "never".
 std::string gsiTime(Real t) {
@@ -134,7 +130,7 @@ void general(const model::SceneDef& sc, GsiText& g, Problems& problems) {
         g.key("G", {v.g1, v.g2});
         g.key("G_TIME", {v.t1, v.t2});
         g.key("G_PARAMETER", {v.steps, v.ramp});
-        g.word("G_TYPE", upper(v.type));
+        g.word("G_TYPE", asciiUpper(v.type));
     } else {
         problems.check(dem.gravity.x == 0, "dem.gravity with an x component (gsi's g points down)");
         g.key("G", {-dem.gravity.y});
@@ -185,7 +181,7 @@ void wall(const model::WallDef& w, std::size_t k, GsiText& g, Problems& problems
         g.key("PISTON_V_MAX", {w.pistonMaxSpeed});
     }
     if (!w.vibType.empty()) {
-        g.word("VIB_TYPE", w.vibType == "cosine" ? "COSINUS" : upper(w.vibType));
+        g.word("VIB_TYPE", w.vibType == "cosine" ? "COSINUS" : asciiUpper(w.vibType));
         g.key("VIB_ANGLE", {w.vibDirection});
         g.key("VIB_WIDTH", {w.vibWidth});
         g.key("VIB_FREQUENCE", {w.vibFrequency});
@@ -250,13 +246,13 @@ void grainKeys(const model::ShapeDef* s, const std::string& name, GsiText& g, Pr
     if (!s) return;
     g.pair("PART_SIZE", s->size);
     g.key("PART_VAR_SIZE", {s->sizeVariation});
-    g.word("RANDOM_SIZE", upper(s->sizeMode));
+    g.word("RANDOM_SIZE", asciiUpper(s->sizeMode));
     g.key("PART_NUM_CORNERS", {static_cast<Real>(s->cornerCount)});
     g.key("PART_VAR_CORNERS", {static_cast<Real>(s->cornerVariation)});
-    g.word("RANDOM_NUM_CORNERS", upper(s->cornerCountMode));
-    g.word("PART_RANDOM_POS_CORNERS", upper(s->cornerAngles));
+    g.word("RANDOM_NUM_CORNERS", asciiUpper(s->cornerCountMode));
+    g.word("PART_RANDOM_POS_CORNERS", asciiUpper(s->cornerAngles));
     g.key("PART_ROT", {-s->rotation});  // gc2d turns clockwise
-    g.word("RANDOM_ROT", upper(s->rotationMode));
+    g.word("RANDOM_ROT", asciiUpper(s->rotationMode));
 }
 
 void block(const model::SceneDef& sc, std::size_t k, GsiText& g, Problems& problems) {
@@ -296,7 +292,7 @@ void source(const model::SceneDef& sc, std::size_t k, GsiText& g, Problems& prob
     g.line("");
     g.line("DROPSOURCE");
     g.pair("POS", s.position);
-    g.word("TYPE", upper(s.placement));
+    g.word("TYPE", asciiUpper(s.placement));
     g.key("WIDTH", {s.width});
     g.key("DELTA_T", {s.interval});
     g.key("TIME", {s.from, s.to});
