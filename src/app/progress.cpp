@@ -58,20 +58,25 @@ void Progress::print(double simTime, std::int64_t steps, bool final) {
     const double done = m_endTime > 0 ? std::clamp(simTime / m_endTime, 0.0, 1.0) : 1.0;
     const double simDone = simTime - m_startSimTime, simLeft = m_endTime - simTime;
     const double eta = simDone > 0 ? elapsed * simLeft / simDone : -1;
+    const std::string note = m_note ? m_note() : std::string();
+    const std::string tail = note.empty() ? note : ", " + note;
     if (m_tty) {
         constexpr int kWidth = 30;
         const int filled = static_cast<int>(done * kWidth);
         std::string bar(static_cast<std::size_t>(filled), '=');
         if (filled < kWidth) bar += '>' + std::string(static_cast<std::size_t>(kWidth - filled - 1), ' ');
-        std::fprintf(stderr, "\r[%s] %s%.4g / %.4g%s  %.3g %s/s  %s %s ", bar.c_str(),
+        // The bar line stays short (one terminal line): the note's part before its colon.
+        const std::string brief = note.substr(0, note.find(':'));
+        std::fprintf(stderr, "\r[%s] %s%.4g / %.4g%s  %.3g %s/s  %s %s%s%s ", bar.c_str(),
                      m_byCount ? "" : "t = ", simTime, m_endTime, m_byCount ? "" : " s", rate, m_unit.c_str(),
-                     final ? "elapsed" : "ETA", clock(final ? elapsed : eta).c_str());
+                     final ? "elapsed" : "ETA", clock(final ? elapsed : eta).c_str(),
+                     brief.empty() ? "" : "  ", brief.c_str());
         if (final) std::fputc('\n', stderr);
     } else {
-        std::fprintf(stderr, "progress: %s%.6g / %.6g%s (%.1f %%), %lld %s, %.3g %s/s, %s %s\n",
+        std::fprintf(stderr, "progress: %s%.6g / %.6g%s (%.1f %%), %lld %s, %.3g %s/s, %s %s%s\n",
                      m_byCount ? "" : "t = ", simTime, m_endTime, m_byCount ? "" : " s", 100 * done,
                      static_cast<long long>(steps), m_unit.c_str(), rate, m_unit.c_str(),
-                     final ? "elapsed" : "ETA", clock(final ? elapsed : eta).c_str());
+                     final ? "elapsed" : "ETA", clock(final ? elapsed : eta).c_str(), tail.c_str());
     }
     std::fflush(stderr);
 }

@@ -3,6 +3,7 @@
 // 10 s of wall time otherwise (CI logs, pipes).
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <string>
 
 namespace granulab::app {
@@ -15,9 +16,12 @@ public:
     /// Called at every stop of the run loop; cheap unless an update is due.
     void update(double simTime, std::int64_t steps);
     void finish(double simTime, std::int64_t steps);
+    /// Text added to each line, asked for when a line is printed (how many threads run and why).
+    void setNote(std::function<std::string()> note) { m_note = std::move(note); }
 
 private:
     void print(double simTime, std::int64_t steps, bool final);
+    std::function<std::string()> m_note;
     double m_endTime;
     std::string m_unit;
     bool m_byCount;

@@ -203,6 +203,7 @@ int runSimulation(Simulation& sim, const model::SceneDef& scene, const RunContex
         return plan.progressByCount ? static_cast<double>(sim.count()) : sim.time();
     };
     Progress progress(plan.progressEnd, ctx.quiet || !root, sim.progressUnit(), plan.progressByCount);
+    progress.setNote([&sim] { return sim.progressNote(); });
     RunReport report;
     report.resumed = resumed;
     sim.beginLoop();

@@ -103,6 +103,8 @@ public:
     virtual std::uint64_t count() const = 0;                           ///< steps (dem), collisions (edmd)
     virtual std::uint64_t progressCounter() const { return count(); }  ///< for the rate shown
     virtual std::string progressUnit() const = 0;                      ///< "steps", "events"
+    /// Said at the end of each progress line (the DEM: how many threads run and why); may be empty.
+    virtual std::string progressNote() const { return {}; }
     virtual std::size_t particles() const = 0;
     virtual std::size_t memoryBytes() const = 0;  ///< engine state [bytes]
     virtual std::vector<std::string> warnings() const = 0;

@@ -19,6 +19,24 @@ int availableCores() noexcept {
     return n > 0 ? n : 1;
 }
 
+void splitByWeight(const double* weights, std::size_t count, int parts, std::uint32_t* cuts) noexcept {
+    const int p = parts > 1 ? parts : 1;
+    double total = 0;
+    for (std::size_t k = 0; k < count; ++k) total += weights[k];
+    cuts[0] = 0;
+    std::size_t k = 0;
+    double sum = 0;
+    for (int r = 1; r < p; ++r) {
+        // The r-th cut: the first item whose running weight passes r/p of the total, or the item
+        // before it where that is closer.
+        const double target = total * r / p;
+        while (k < count && sum + weights[k] <= target) sum += weights[k++];
+        if (k < count && target - sum > sum + weights[k] - target) sum += weights[k++];
+        cuts[r] = static_cast<std::uint32_t>(k);
+    }
+    cuts[p] = static_cast<std::uint32_t>(count);
+}
+
 int defaultThreads() noexcept {
     const int cores = availableCores();
     const char* local = std::getenv("OMPI_COMM_WORLD_LOCAL_SIZE");

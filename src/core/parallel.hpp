@@ -9,6 +9,10 @@
 #include <cstddef>
 #include <cstdint>
 
+#if GRANULAB_HAVE_OPENMP
+#include <omp.h>
+#endif
+
 namespace granulab {
 
 /// True when this build runs parallel loops on threads.
@@ -26,8 +30,11 @@ int availableCores() noexcept;
 /// T threads then do not oversubscribe the cores, however mpirun bound them.
 int defaultThreads() noexcept;
 
-/// Calls fn(k) once for every k in [0, count), on up to `threads` threads, the items handed out
-/// one by one as threads become free (dynamic schedule: uneven items balance). The calls must be
+/// Calls fn(k) once for every k in [0, count), on up to `threads` threads, each thread taking one
+/// contiguous run of k (static schedule). Contiguous runs keep a thread on the same items, and so on
+/// the same particles' cache lines, from stage to stage: handing items out one by one (a dynamic
+/// schedule) made neighbouring tiles alternate between cores, and every step moved their cache lines
+/// from one core to the other (docs/physics/dem-threads.md, "Performance"). The calls must be
 /// independent and must not throw.
 template <class Fn>
 void parallelFor(int threads, std::size_t count, Fn&& fn) noexcept {
@@ -35,7 +42,7 @@ void parallelFor(int threads, std::size_t count, Fn&& fn) noexcept {
     if (threads > 1 && count > 1) {
         const int team = count < static_cast<std::size_t>(threads) ? static_cast<int>(count) : threads;
         const auto n = static_cast<std::int64_t>(count);
-#pragma omp parallel for schedule(dynamic, 1) num_threads(team)
+#pragma omp parallel for schedule(static) num_threads(team)
         for (std::int64_t k = 0; k < n; ++k) fn(static_cast<std::size_t>(k));
         return;
     }
@@ -43,6 +50,36 @@ void parallelFor(int threads, std::size_t count, Fn&& fn) noexcept {
     (void)threads;
 #endif
     for (std::size_t k = 0; k < count; ++k) fn(k);
+}
+
+/// Cuts [0, count) into `parts` contiguous ranges of nearly equal total weight: range k is
+/// [cuts[k], cuts[k + 1]), cuts has parts + 1 entries, weights has count entries (>= 0). A range
+/// may be empty.
+void splitByWeight(const double* weights, std::size_t count, int parts, std::uint32_t* cuts) noexcept;
+
+/// Runs first(k, begin, end) for every range k of `cuts` (parts + 1 entries) on its own thread, waits
+/// for all of them, then runs second(k, begin, end) for the same ranges on the same threads: two
+/// stages of one parallel region, joined by a barrier (cheaper than two regions, and a thread's
+/// second stage finds its own ranges' data in its cache). parts <= 1 runs both on the caller.
+template <class First, class Second>
+void parallelRanges(int parts, const std::uint32_t* cuts, First&& first, Second&& second) noexcept {
+#if GRANULAB_HAVE_OPENMP
+    if (parts > 1) {
+#pragma omp parallel num_threads(parts)
+        {
+            const int k = omp_get_thread_num();
+            const int team = omp_get_num_threads();  // fewer than asked when the runtime says so
+            for (int r = k; r < parts; r += team) first(static_cast<std::size_t>(r), cuts[r], cuts[r + 1]);
+#pragma omp barrier
+            for (int r = k; r < parts; r += team) second(static_cast<std::size_t>(r), cuts[r], cuts[r + 1]);
+        }
+        return;
+    }
+#endif
+    for (int r = 0; r < (parts > 1 ? parts : 1); ++r)
+        first(static_cast<std::size_t>(r), cuts[r], cuts[r + 1]);
+    for (int r = 0; r < (parts > 1 ? parts : 1); ++r)
+        second(static_cast<std::size_t>(r), cuts[r], cuts[r + 1]);
 }
 
 /// Smallest block of parallelBlocks: below it a thread costs more than it saves.

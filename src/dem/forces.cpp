@@ -149,6 +149,31 @@ void gatherDeferred(std::uint32_t t, model::ParticleStore& s, const NeighborList
     }
 }
 
+/// Splits the tiles into ws.threads contiguous runs of about equal work (ws.cuts): a tile's work is
+/// estimated from its slots, its candidate pairs and the contacts it had at the last evaluation (a
+/// touching pair costs several times an apart one). The split changes only the work per thread,
+/// never the order in which a grain's forces are added.
+void splitTiles(const NeighborList& list, ForceWorkspace& ws) noexcept {
+    const std::uint32_t tiles = list.tiles.count;
+    const int parts = std::max(1, std::min<int>(ws.threads, static_cast<int>(tiles)));
+    ws.cuts.resize(static_cast<std::size_t>(parts) + 1);
+    if (parts == 1) {
+        ws.cuts[0] = 0;
+        ws.cuts[1] = tiles;
+        return;
+    }
+    ws.tileWork.resize(tiles);
+    for (std::uint32_t t = 0; t < tiles; ++t) {
+        const auto pairs = list.tileBegin(list.pairs, t + 1) - list.tileBegin(list.pairs, t);
+        const auto wallPairs = list.tileBegin(list.wallPairs, t + 1) - list.tileBegin(list.wallPairs, t);
+        const ForceStats& last = ws.counters[t].stats;
+        ws.tileWork[t] = static_cast<double>(list.tiles.end(t) - list.tiles.begin(t)) +
+                         2.0 * static_cast<double>(pairs + wallPairs) +
+                         6.0 * static_cast<double>(last.contacts + last.wallContacts);
+    }
+    splitByWeight(ws.tileWork.data(), tiles, parts, ws.cuts.data());
+}
+
 }  // namespace
 
 void computeForces(model::ParticleStore& s, const model::WallSet& walls, NeighborList& list,
@@ -169,13 +194,20 @@ void computeForces(model::ParticleStore& s, const model::WallSet& walls, Neighbo
     ws.tileWallForce.resize(tiles * ws.wallStride);
     if (log && ws.tileLogs.size() < tiles) ws.tileLogs.resize(tiles);
     shapes.update(s, ws.threads);
-    parallelFor(ws.threads, tiles, [&](std::size_t t) {
-        tileForces(static_cast<std::uint32_t>(t), s, walls, list, laws, body, drift, dt, trialHistory, shapes,
-                   ws, log != nullptr);
-    });
-    if (list.crossPairs() > 0)
-        parallelFor(ws.threads, tiles,
-                    [&](std::size_t t) { gatherDeferred(static_cast<std::uint32_t>(t), s, list, ws); });
+    splitTiles(list, ws);
+    // Each thread takes a contiguous run of tiles of about equal work, then gathers the deferred
+    // shares of the same tiles after a barrier.
+    parallelRanges(
+        ws.threads, ws.cuts.data(),
+        [&](std::size_t, std::uint32_t begin, std::uint32_t end) {
+            for (std::uint32_t t = begin; t < end; ++t)
+                tileForces(t, s, walls, list, laws, body, drift, dt, trialHistory, shapes, ws,
+                           log != nullptr);
+        },
+        [&](std::size_t, std::uint32_t begin, std::uint32_t end) {
+            if (list.crossPairs() == 0) return;
+            for (std::uint32_t t = begin; t < end; ++t) gatherDeferred(t, s, list, ws);
+        });
     // Sums over tiles in tile order: the same for any thread count.
     stats = ForceStats{};
     for (auto& w : wallForce) w = Vec2{};

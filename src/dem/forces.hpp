@@ -100,6 +100,9 @@ struct ForceWorkspace {
     std::vector<Vec2> tileWallForce;
     std::size_t wallStride = 0;
     std::vector<ContactLog> tileLogs;  ///< filled on the steps that record contacts
+    /// The threads' runs of tiles: thread k takes tiles [cuts[k], cuts[k + 1]) (forces.cpp splitTiles).
+    std::vector<std::uint32_t> cuts;
+    std::vector<double> tileWork;  ///< estimated work of each tile, for the split
 };
 
 /// Overwrites f and torque with body forces, then adds all contact forces. Updates the

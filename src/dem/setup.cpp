@@ -243,6 +243,7 @@ WorldConfig makeWorldConfig(const model::SceneDef& scene, Real maxRadius) {
     c.integrator.gearC0 = scene.dem.gearC0;
     c.broadPhase = broadPhaseOf(scene);
     c.threads = scene.run.threads > 0 ? scene.run.threads : defaultThreads();
+    c.autoThreads = scene.run.threads == 0;  // the count chosen by measurement (core/thread_governor.hpp)
     c.sortEveryRebuilds = static_cast<int>(scene.dem.sortEvery);
     c.overlapGuard = scene.dem.overlapGuard ? 0.01 : 0.0;
     c.weight = scene.dem.weight;

@@ -2,6 +2,8 @@
 // DEM world: the step pipeline, energies and the checkpoint state.
 #include "dem/world.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <istream>
@@ -50,6 +52,10 @@ World::World(WorldConfig config, model::ParticleStore store, model::WallSet wall
     if (!m_broad) throw std::invalid_argument("unknown broad phase " + m_config.broadPhase);
     if (!m_integrator) throw std::invalid_argument("unknown integrator " + m_config.integrator.name);
     m_config.threads = std::max(1, m_config.threads);
+    if (m_config.autoThreads)
+        m_governor.setAutomatic(m_config.threads);
+    else
+        m_governor.setExplicit(m_config.threads);
     m_minRadius = m_store.size() ? *std::min_element(m_store.radius.begin(), m_store.radius.end()) : 1e300;
     m_shapes.anyPolygon = m_pool.size() > 0;
     for (const ParticleId id : m_store.id) m_nextId = std::max<ParticleId>(m_nextId, id + 1);
@@ -58,15 +64,36 @@ World::World(WorldConfig config, model::ParticleStore store, model::WallSet wall
     if (m_config.fluid) m_field = std::make_unique<fluid::FieldSeries>(std::move(m_config.fluid->source));
 }
 
-int World::team() const noexcept {
-    const std::size_t perThread = m_particlesPerThread > 0 ? m_particlesPerThread
-                                  : m_shapes.anyPolygon    ? kPolygonsPerThread
-                                                           : kParticlesPerThread;
-    const std::size_t useful = std::max<std::size_t>(1, m_store.size() / perThread);
-    return static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(m_config.threads), useful));
+void World::updateTeam() {
+    if (m_governor.automatic()) {
+        const bool polygons = m_shapes.anyPolygon;
+        const std::size_t perThread = m_particlesPerThread > 0 ? m_particlesPerThread
+                                      : polygons               ? kPolygonsPerThread
+                                                               : kParticlesPerThread;
+        const std::size_t n = m_store.size();
+        const std::size_t useful = std::max<std::size_t>(1, n / perThread);
+        m_governor.setWorkLimit(
+            static_cast<int>(std::min<std::size_t>(useful, 1024)),
+            fmt::format("{} particles are too few for 2 threads (the threaded size is {} {} per thread)", n,
+                        perThread, polygons ? "particles with polygons among them" : "particles"));
+    }
+    applyTeam();
 }
 
-void World::updateTeam() noexcept {
+void World::setThreads(int threads) {
+    if (threads > 0) {
+        m_config.threads = threads;
+        m_config.autoThreads = false;
+        m_governor.setExplicit(threads);
+    } else {
+        m_config.threads = defaultThreads();
+        m_config.autoThreads = true;
+        m_governor.setAutomatic(m_config.threads);
+    }
+    updateTeam();
+}
+
+void World::applyTeam() noexcept {
     const int n = team();
     m_forceWork.threads = n;
     m_broad->setThreads(n);
@@ -267,6 +294,7 @@ std::uint32_t World::step() {
 }
 
 std::uint32_t World::beginStep() {
+    m_stepStart = wallSeconds();
     const Real dt = m_config.dt;
     std::uint32_t status = kStepOk;
     Real maxSpeed;
@@ -336,6 +364,8 @@ std::uint32_t World::finishStep(IterationLink* link) {
         ScopedStage t(m_timers, Stage::Updaters);
         exchangeParticles();
     }
+    // The automatic thread count follows the step's wall time (the results do not depend on it).
+    if (m_governor.stepDone(wallSeconds() - m_stepStart)) applyTeam();
     return status;
 }
 

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "core/thread_governor.hpp"
 #include "core/timer.hpp"
 #include "dem/broad_phase.hpp"
 #include "dem/fluid_forces.hpp"
@@ -58,8 +59,11 @@ struct WorldConfig {
     Real overlapGuard = 0;  ///< see BodyForces::overlapGuard
     IntegratorParams integrator;
     std::string broadPhase = "cell_grid";
-    int threads = 1;                  ///< threads of the step (run.threads); the results do not depend on it
-    std::vector<PullSpring> springs;  ///< slots refer to the store given to the World
+    int threads = 1;  ///< threads of the step (run.threads); the results do not depend on it
+    /// run.threads = 0: `threads` is the most (the cores), the step's wall time chooses the count
+    /// (core/thread_governor.hpp); false: exactly `threads`.
+    bool autoThreads = false;
+    std::vector<PullSpring> springs;                 ///< slots refer to the store given to the World
     std::optional<GravitySchedule> gravitySchedule;  ///< replaces `gravity` when set (gc2d 6.6)
     std::optional<SizeCycle> sizeCycle;              ///< global size scaling s(t) (gc2d 2.4)
     FlowConfig flow;                                 ///< sources, inlets, outlets (step 8)
@@ -213,15 +217,22 @@ public:
     const StageTimers<Stage>& timers() const noexcept { return m_timers; }
     const char* broadPhaseName() const noexcept { return m_broad->name(); }
     const char* integratorName() const noexcept { return m_integrator->name(); }
+    /// The configured count: run.threads, or the cores for the automatic count (autoThreads).
     int threads() const noexcept { return m_config.threads; }
-    /// Threads the step uses now: run.threads, but at most one per kParticlesPerThread particles
+    /// Threads the step uses now: exactly run.threads when it is given; with the automatic count,
+    /// the governor's choice, at most one thread per kParticlesPerThread particles
     /// (kPolygonsPerThread with polygons), below which a thread costs more than it saves. The
     /// results do not depend on it.
-    int team() const noexcept;
+    int team() const noexcept { return m_governor.team(); }
+    /// From the next step on, exactly `threads` threads (as run.threads = threads > 0; 0: the automatic
+    /// count again). The results do not depend on it.
+    void setThreads(int threads);
+    /// How the thread count was chosen (reason(), trials).
+    const ThreadGovernor& threadGovernor() const noexcept { return m_governor; }
     static constexpr std::size_t kParticlesPerThread = 1024;
     static constexpr std::size_t kPolygonsPerThread = 256;
-    /// Replaces both limits of team() (tests run small scenes on several threads with it).
-    void setParticlesPerThread(std::size_t particles) noexcept {
+    /// Replaces both work limits of the automatic count (tests use it).
+    void setParticlesPerThread(std::size_t particles) {
         m_particlesPerThread = particles;
         updateTeam();
     }
@@ -269,8 +280,10 @@ public:
     void loadState(std::istream& is);
 
 private:
+    /// Gives the automatic thread count the work limit of the particle count now, then applyTeam().
+    void updateTeam();
     /// Hands team() to the force workspace, the integrator and the broad phase.
-    void updateTeam() noexcept;
+    void applyTeam() noexcept;
     void evaluateForces(const BodyForces& body, const DriftVelocities& drift, bool trial);
     /// Fluid forces and mutual attraction (after the contact forces; stage Fluid).
     void evaluateFieldForces(const BodyForces& body);
@@ -298,6 +311,8 @@ private:
     ForceStats m_stats;
     ForceWorkspace m_forceWork;
     std::size_t m_particlesPerThread = 0;  ///< 0: kParticlesPerThread / kPolygonsPerThread
+    ThreadGovernor m_governor;
+    double m_stepStart = 0;  ///< [s] wall clock at beginStep, for the governor
     std::vector<Vec2> m_wallForce;
     ContactLog m_contactLog;
     bool m_recordContacts = false;

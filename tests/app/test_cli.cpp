@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Command-line behaviour: the bad-input table (each malformed scene gives its specific message
-// and exit status 2), bit-for-bit resume, determinism, info/help/version.
+// and exit status 2), bit-for-bit resume, determinism (also across thread counts), info/help/version.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
 
 #include "../support.hpp"
 
@@ -174,6 +176,33 @@ TEST(Cli, ResumeContinuesBitForBitAndRunsAreDeterministic) {
     const std::string series = test::readText(dir / "split/series.csv");
     EXPECT_NE(series.find("\n0.030000000000000002,"), std::string::npos);
     EXPECT_EQ(series.find("\n0.0137"), series.rfind("\n0.0137"));
+}
+
+TEST(Cli, AnyThreadCountGivesTheSameFinalStateAndTheDefaultSaysWhy) {
+    // docs/physics/dem-threads.md: 1, 2 and 3 threads and the automatic count (which may change
+    // the count during the run) write the same final.csv; 1,500 disks run on one thread by default,
+    // and summary.json says so and why.
+    const test::ScratchDir scratch;
+    const auto& dir = scratch.path;
+    const std::string scene = std::string(GRANULAB_SOURCE_DIR) + "/examples/disks_in_box.toml";
+    const std::string common = " --quiet --set run.end_time=0.02";
+    for (const std::string t : {"1", "2", "3", "0"}) {
+        const auto r =
+            test::runGranulab("run '" + scene + "'" + common + " --threads " + t + " --out t" + t, dir);
+        ASSERT_EQ(r.status, 0) << r.output;
+    }
+    const std::string one = test::readText(dir / "t1/final.csv");
+    ASSERT_GT(one.size(), 1000u);
+    for (const char* t : {"t2", "t3", "t0"}) EXPECT_EQ(one, test::readText(dir / t / "final.csv")) << t;
+    const auto summary = nlohmann::json::parse(test::readText(dir / "t0/summary.json"));
+    EXPECT_EQ(summary["threads"], 1);
+    EXPECT_EQ(summary["threads_choice"]["mode"], "automatic");
+    EXPECT_NE(summary["threads_choice"]["reason"].get<std::string>().find("too few for 2 threads"),
+              std::string::npos)
+        << summary["threads_choice"];
+    const auto asked = nlohmann::json::parse(test::readText(dir / "t3/summary.json"));
+    EXPECT_EQ(asked["threads"], 3);  // an explicit count is kept exactly
+    EXPECT_EQ(asked["threads_choice"]["mode"], "explicit");
 }
 
 TEST(Cli, InfoHelpVersion) {

@@ -257,3 +257,32 @@ TEST(DemThreads, ContactForcesCancelInPairsWhileGrainsEnter) {
     EXPECT_NEAR(sum.x, weight.x, 1e-9 * scale * static_cast<Real>(s.size()));
     EXPECT_NEAR(sum.y, weight.y, 1e-9 * scale * static_cast<Real>(s.size()));
 }
+
+TEST(DemThreads, ASmallSceneRunsOnOneThreadByDefault) {
+    // run.threads = 0: the automatic count; ~1,500 disks are too few to share (World::team).
+    dem::World w = test::makeWorldFromToml(kDiskBed);
+    ASSERT_TRUE(w.threadGovernor().automatic());
+    ASSERT_LT(w.store().size(), 2 * dem::World::kParticlesPerThread);
+    for (int k = 0; k < 300; ++k) ASSERT_EQ(w.step(), dem::kStepOk);
+    EXPECT_EQ(w.team(), 1);
+    EXPECT_EQ(w.threadGovernor().trials(), 0u);
+    EXPECT_NE(w.threadGovernor().reason().find("1 thread: "), std::string::npos);
+    EXPECT_NE(w.threadGovernor().reason().find("too few for 2 threads"), std::string::npos)
+        << w.threadGovernor().reason();
+}
+
+TEST(DemThreads, ChangingTheThreadCountDuringARunChangesNoBit) {
+    // What the automatic count does when it tries another team: 1, 2, 3, 4, 1, ... threads from one
+    // step to the next give the state of one thread throughout, bit for bit.
+    const Snapshot one = runOn(kDiskBed, 1, 300);
+    dem::World w = test::makeWorldFromToml(kDiskBed, {io::parseOverride("run.threads=1")});
+    w.setParticlesPerThread(16);
+    for (int k = 0; k < 300; ++k) {
+        w.setThreads(1 + k % 4);
+        ASSERT_EQ(w.team(), 1 + k % 4);
+        ASSERT_EQ(w.step(), dem::kStepOk);
+    }
+    EXPECT_TRUE(snapshotOf(w) == one);
+    w.setThreads(0);  // back to the automatic count
+    EXPECT_TRUE(w.threadGovernor().automatic());
+}

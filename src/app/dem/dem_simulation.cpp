@@ -383,7 +383,16 @@ public:
             report.loopSeconds > 0 ? n * static_cast<double>(steps) / report.loopSeconds : 0.0;
         js["integrator"] = m_world.integratorName();
         js["broad_phase"] = m_world.broadPhaseName();
-        js["threads"] = m_world.threads();
+        {  // how many threads ran and why (docs/physics/dem-threads.md, "How the default is chosen")
+            const dem::World& w = m_domain ? m_domain->local() : m_world;
+            const ThreadGovernor& g = w.threadGovernor();
+            js["threads"] = w.team();
+            js["threads_choice"] = {{"mode", g.automatic() ? "automatic" : "explicit"},
+                                    {"limit", g.limit()},
+                                    {"reason", g.reason()},
+                                    {"trials", g.trials()},
+                                    {"changes", g.changes()}};
+        }
         js["ranks"] = worldCommunicator().size();
         if (m_domain) js["domains"] = domainKeys();
         {  // the work split of the threaded step (docs/physics/dem-threads.md)
@@ -476,22 +485,20 @@ public:
         return js;
     }
 
-    /// "2 threads", or "1 of 2 threads" while the particles are too few to share (World::team).
+    /// "2 threads: asked for ...", "1 thread: 512 ... is below the threaded size", or the measured
+    /// choice of the automatic count (ThreadGovernor::reason).
     std::string threadsNote() const {
         if (m_domain) {  // the root's share; the others alike
             const dem::World& local = m_domain->local();
             const int ranks = worldCommunicator().size();
-            return fmt::format("{} ranks (slabs across {}{}) x {} thread{} on the root", ranks,
-                               m_domain->partition().axis == 0 ? "x" : "y",
-                               m_scene.run.loadBalance ? ", balanced by contacts" : "", local.team(),
-                               local.team() == 1 ? "" : "s");
+            return fmt::format(
+                "{} ranks (slabs across {}{}) x {}", ranks, m_domain->partition().axis == 0 ? "x" : "y",
+                m_scene.run.loadBalance ? ", balanced by contacts" : "", local.threadGovernor().reason());
         }
-        const int asked = m_world.threads(), used = m_world.team();
-        if (used == asked) return fmt::format("{} thread{}", used, used == 1 ? "" : "s");
-        return fmt::format(
-            "{} of {} threads (at most one per {} particles)", used, asked,
-            m_world.shapes().size() > 0 ? dem::World::kPolygonsPerThread : dem::World::kParticlesPerThread);
+        return m_world.threadGovernor().reason();
     }
+
+    std::string progressNote() const override { return threadsNote(); }
 
     std::string banner(const std::string& dir) const override {
         return fmt::format(
@@ -505,9 +512,10 @@ public:
     void printDone(const std::string& dir, const RunReport& report) const override {
         const std::int64_t steps = m_world.stepIndex() - m_loopStartStep;
         const double n = static_cast<double>(m_world.store().size());
-        fmt::print(stderr, "done: {} steps in {:.3g} s ({:.3g} particle-steps/s)\n", steps,
+        fmt::print(stderr, "done: {} steps in {:.3g} s ({:.3g} particle-steps/s; {})\n", steps,
                    report.loopSeconds,
-                   report.loopSeconds > 0 ? n * static_cast<double>(steps) / report.loopSeconds : 0.0);
+                   report.loopSeconds > 0 ? n * static_cast<double>(steps) / report.loopSeconds : 0.0,
+                   threadsNote());
         if (!m_scene.output.vtk) {
             fmt::print(
                 "results in {}/ : summary.json, series.csv, final.csv, checkpoint.bin (VTK output off)\n",

@@ -1,0 +1,137 @@
+// SPDX-License-Identifier: MIT
+// The automatic thread count: measured trials of larger and smaller teams (core/thread_governor.hpp).
+#include "core/thread_governor.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace granulab {
+
+namespace {
+std::string threadsWord(int n) {
+    return fmt::format("{} thread{}", n, n == 1 ? "" : "s");
+}
+}  // namespace
+
+void ThreadGovernor::setExplicit(int threads) noexcept {
+    m_automatic = false;
+    m_explicit = std::max(1, threads);
+    m_team = m_explicit;
+    m_probing = false;
+}
+
+void ThreadGovernor::setAutomatic(int cores) noexcept {
+    m_automatic = true;
+    m_cores = std::max(1, cores);
+    m_team = 1;  // the safe start: one thread never waits for a core that another job holds
+    m_probing = false;
+    m_cost = -1;
+    startWindow();
+}
+
+int ThreadGovernor::limit() const noexcept {
+    return m_automatic ? std::max(1, std::min(m_cores, m_byWork)) : m_explicit;
+}
+
+void ThreadGovernor::setWorkLimit(int byWork, std::string why) {
+    m_byWork = std::max(1, byWork);
+    m_workWhy = std::move(why);
+    if (!m_automatic) return;
+    const int most = limit();
+    if (m_probing && m_probeTeam > most) {
+        m_probing = false;
+        startWindow();
+    }
+    if (m_team > most) {  // fewer particles (an outlet): the team shrinks, and is measured anew
+        m_team = most;
+        m_cost = -1;
+        startWindow();
+    }
+}
+
+int ThreadGovernor::neighbour(int team, bool up) const noexcept {
+    const int most = limit();
+    if (up) return team >= most ? 0 : std::min(most, 2 * team);
+    return team <= 1 ? 0 : team / 2;
+}
+
+bool ThreadGovernor::stepDone(double seconds) noexcept {
+    if (!m_automatic || limit() <= 1) return false;
+    m_clock += seconds;
+    ++m_windowSteps;
+    m_windowSeconds += seconds;
+    const bool full = m_windowSeconds >= kWindow && m_windowSteps >= kWindowSteps;
+    if (m_probing) {
+        // Lost already: slower by kLose than the team's pace over the same steps, with a slack of
+        // two of its steps (the first step of a team also wakes its threads).
+        const double pace = m_cost * m_windowSteps;
+        if (m_windowSeconds > kLose * pace + 2 * m_cost) {
+            endTrial(false, pace / m_windowSeconds);
+            return true;
+        }
+        if (!full) return false;
+        const double cost = m_windowSeconds / m_windowSteps;
+        endTrial(cost < kWin * m_cost, m_cost / cost);
+        return true;
+    }
+    if (!full) return false;
+    const double cost = m_windowSeconds / m_windowSteps;
+    m_cost = m_cost < 0 ? cost : 0.5 * (m_cost + cost);  // smoothed over the team's windows
+    startWindow();
+    // A trial when one is due: a larger team first (the machine may have cores to spare), else a
+    // smaller one (the cores may have become busy).
+    for (const bool up : {true, false}) {
+        const int next = neighbour(m_team, up);
+        if (next == 0 || m_clock < (up ? m_nextUp : m_nextDown)) continue;
+        m_probing = true;
+        m_probeTeam = next;
+        ++m_trials;
+        return true;
+    }
+    return false;
+}
+
+void ThreadGovernor::endTrial(bool won, double ratio) noexcept {
+    const bool up = m_probeTeam > m_team;
+    m_comparedTeam = m_probeTeam;
+    m_comparedWith = m_team;
+    m_comparedRatio = ratio;
+    double& backoff = up ? m_backoffUp : m_backoffDown;
+    double& next = up ? m_nextUp : m_nextDown;
+    if (won) {
+        m_team = m_probeTeam;
+        m_cost = -1;  // measured afresh on its own windows
+        ++m_changes;
+        backoff = kFirstBackoff;
+        next = m_clock;  // go on in the same direction at once
+        // The way back is tried later, as a check that the cores stay free (or stay busy).
+        (up ? m_nextDown : m_nextUp) = m_clock + kFirstBackoff;
+        (up ? m_backoffDown : m_backoffUp) = kFirstBackoff;
+    } else {
+        backoff = std::min(kMaxBackoff, 2 * backoff);
+        next = m_clock + backoff;
+    }
+    m_probing = false;
+    startWindow();
+}
+
+std::string ThreadGovernor::reason() const {
+    const int now = team();
+    if (!m_automatic) return threadsWord(now) + ": asked for (--threads / run.threads)";
+    if (m_cores <= 1) return "1 thread: this process may use 1 core";
+    if (m_byWork <= 1) return "1 thread: " + m_workWhy;
+    if (m_comparedTeam == 0)
+        return fmt::format("{}: trying up to {} (the fastest is measured during the run)", threadsWord(now),
+                           limit());
+    // The last trial compared the team in use with another one.
+    const bool trialWon = m_comparedTeam == m_team;
+    const int other = trialWon ? m_comparedWith : m_comparedTeam;
+    const double speed = trialWon ? m_comparedRatio : 1.0 / m_comparedRatio;  // team in use / other
+    std::string note =
+        fmt::format("{}: {:.2f}x the speed of {}, measured", threadsWord(m_team), speed, threadsWord(other));
+    if (m_team < other && speed > 1.5) note += " (the cores are busy)";
+    return note;
+}
+
+}  // namespace granulab

@@ -1,0 +1,141 @@
+// SPDX-License-Identifier: MIT
+// The automatic thread count (core/thread_governor.hpp; docs/physics/dem-threads.md, "How the
+// default is chosen"), driven by made-up step times: a larger team that is faster is taken, one
+// that is slower is left within two steps, tries that lose come less and less often, a machine
+// whose cores become busy is followed back to one thread, and an explicit count never changes.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <string>
+
+#include "core/thread_governor.hpp"
+
+using granulab::ThreadGovernor;
+
+namespace {
+
+/// Runs `steps` steps whose wall time is cost(team) [s]; returns how many steps ran on each team
+/// (index = team, up to 8).
+template <class Cost>
+std::array<int, 9> drive(ThreadGovernor& g, int steps, Cost cost) {
+    std::array<int, 9> on{};
+    for (int k = 0; k < steps; ++k) {
+        ++on[static_cast<std::size_t>(g.team())];
+        g.stepDone(cost(g.team()));
+    }
+    return on;
+}
+
+}  // namespace
+
+TEST(ThreadGovernor, AnExplicitCountIsKeptWhateverTheTimes) {
+    ThreadGovernor g;
+    g.setExplicit(3);
+    g.setWorkLimit(1, "few particles");
+    const auto on = drive(g, 10000, [](int team) { return team == 3 ? 1.0 : 1e-6; });
+    EXPECT_EQ(on[3], 10000);
+    EXPECT_EQ(g.trials(), 0u);
+    EXPECT_NE(g.reason().find("asked for"), std::string::npos) << g.reason();
+}
+
+TEST(ThreadGovernor, BelowTheThreadedSizeItStaysOnOneThreadWithoutTrying) {
+    ThreadGovernor g;
+    g.setAutomatic(8);
+    g.setWorkLimit(1, "512 particles is below the threaded size (1024 per thread)");
+    const auto on = drive(g, 5000, [](int team) { return 1e-4 / team; });
+    EXPECT_EQ(on[1], 5000);
+    EXPECT_EQ(g.trials(), 0u);
+    EXPECT_EQ(g.reason(), "1 thread: 512 particles is below the threaded size (1024 per thread)");
+}
+
+TEST(ThreadGovernor, OneCoreMeansOneThread) {
+    ThreadGovernor g;
+    g.setAutomatic(1);
+    g.setWorkLimit(100, "");
+    drive(g, 1000, [](int team) { return 1e-4 / team; });
+    EXPECT_EQ(g.team(), 1);
+    EXPECT_EQ(g.reason(), "1 thread: this process may use 1 core");
+}
+
+TEST(ThreadGovernor, ClimbsToTheFastestTeamOnIdleCores) {
+    // 1 ms per step on one thread, 1.8x on 2, 3.2x on 4, 3.0x on 8 (memory-bound beyond 4).
+    ThreadGovernor g;
+    g.setAutomatic(8);
+    g.setWorkLimit(64, "");
+    const auto cost = [](int team) {
+        switch (team) {
+            case 1:
+                return 1e-3;
+            case 2:
+                return 1e-3 / 1.8;
+            case 4:
+                return 1e-3 / 3.2;
+            default:
+                return 1e-3 / 3.0;
+        }
+    };
+    const auto on = drive(g, 20000, cost);
+    EXPECT_EQ(g.team(), 4) << g.reason();
+    EXPECT_GT(on[4], 18000);  // found within the first windows, and kept
+    EXPECT_NE(g.reason().find("4 threads: "), std::string::npos) << g.reason();
+}
+
+TEST(ThreadGovernor, LeavesASlowTrialWithinTwoStepsAndTriesLessOftenAfterEachLoss) {
+    // Busy cores: two threads take 60 times as long per step (a barrier waits for a time slice).
+    ThreadGovernor g;
+    g.setAutomatic(2);
+    g.setWorkLimit(2, "");
+    int trialSteps = 0, longestTrial = 0, current = 0;
+    double wall = 0, wallOnOne = 0;
+    const int steps = 200000;  // 20 s of one-thread steps of 0.1 ms
+    for (int k = 0; k < steps; ++k) {
+        const int team = g.team();
+        const double t = team == 1 ? 1e-4 : 6e-3;
+        if (team == 2) {
+            ++trialSteps;
+            ++current;
+            longestTrial = std::max(longestTrial, current);
+        } else {
+            current = 0;
+        }
+        wall += t;
+        wallOnOne += 1e-4;
+        g.stepDone(t);
+    }
+    EXPECT_EQ(g.team(), 1);
+    EXPECT_LE(longestTrial, 2);
+    // Tries at 0.25, 0.5, 1, 2, 4, 8, 16 s of run time and then every 30 s: a handful.
+    EXPECT_LE(g.trials(), 8u);
+    EXPECT_LT(wall, 1.01 * wallOnOne) << "the tries cost more than 1 %";
+    EXPECT_NE(g.reason().find("1 thread: "), std::string::npos) << g.reason();
+    EXPECT_NE(g.reason().find("the cores are busy"), std::string::npos) << g.reason();
+    EXPECT_GT(trialSteps, 0);
+}
+
+TEST(ThreadGovernor, FollowsCoresThatBecomeBusyAndIdleAgain) {
+    ThreadGovernor g;
+    g.setAutomatic(2);
+    g.setWorkLimit(2, "");
+    bool busy = false;
+    const auto cost = [&](int team) { return team == 1 ? 1e-3 : (busy ? 2e-2 : 0.55e-3); };
+    drive(g, 2000, cost);  // 1-2 s: idle
+    EXPECT_EQ(g.team(), 2);
+    busy = true;
+    drive(g, 20000, cost);  // another job took a core
+    EXPECT_EQ(g.team(), 1) << g.reason();
+    busy = false;
+    drive(g, 100000, cost);  // ~100 s: it is gone
+    EXPECT_EQ(g.team(), 2) << g.reason();
+}
+
+TEST(ThreadGovernor, FewerParticlesShrinkTheTeam) {
+    ThreadGovernor g;
+    g.setAutomatic(4);
+    g.setWorkLimit(4, "");
+    drive(g, 5000, [](int team) { return 1e-3 / team; });
+    EXPECT_EQ(g.team(), 4);
+    g.setWorkLimit(1, "100 particles is below the threaded size (1024 per thread)");
+    EXPECT_EQ(g.team(), 1);
+    EXPECT_EQ(g.limit(), 1);
+}
