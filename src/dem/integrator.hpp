@@ -42,6 +42,9 @@ public:
     /// Stage 1: advance the state to the trial state at t + dt from the accepted state at t and
     /// the forces evaluated there. Returns the largest speed [m/s] (tunnelling guard).
     virtual Real predict(model::ParticleStore& s, Real dt) noexcept = 0;
+    /// True if predict's largest speed times dt bounds every particle's displacement in the step
+    /// (the neighbour check may then skip its O(N) scan while the sum stays below the skin).
+    virtual bool speedBoundsDisplacement() const noexcept { return false; }
     /// Stage 7 after a force evaluation at the trial state: returns true when the step is
     /// accepted; false asks for another force evaluation at the updated trial state.
     virtual bool correct(model::ParticleStore& s, Real dt, int iteration) noexcept = 0;
@@ -106,6 +109,8 @@ class VelocityVerlet final : public Integrator {
 public:
     const char* name() const noexcept override { return "verlet"; }
     Real predict(model::ParticleStore& s, Real dt) noexcept override;
+    /// x(t + dt) = x(t) + dt v(t + dt/2), and predict returns the largest |v(t + dt/2)|.
+    bool speedBoundsDisplacement() const noexcept override { return true; }
     bool correct(model::ParticleStore& s, Real dt, int iteration) noexcept override;
     DriftVelocities driftVelocities() const noexcept override { return {m_half[0], m_half[1], m_half[2]}; }
     StateColumns* state() noexcept override { return &m_half; }

@@ -239,6 +239,7 @@ void World::rebuildNeighbors() {
     updateTeam();
     m_list.rebuild(m_store, m_walls, m_config.skin, time(), *m_broad, m_laws, oldToNew,
                    !m_integrator->singleEvaluation(), m_forceWork.threads);
+    m_travelBound = 0;  // x0 = the positions now
     if (m_flow.active()) m_flow.refreshCandidates(m_store, m_maxRadius, m_config.skin);
 }
 
@@ -303,6 +304,8 @@ std::uint32_t World::beginStep() {
         maxSpeed = m_integrator->predict(m_store, dt);
     }
     ++m_step;
+    m_travelBound +=
+        m_integrator->speedBoundsDisplacement() ? maxSpeed * dt : std::numeric_limits<Real>::infinity();
     {  // 8 scene updaters (walls move and laws change before the forces of the new time)
         ScopedStage t(m_timers, Stage::Updaters);
         m_walls.advance(time(), dt, m_wallForce);
@@ -330,6 +333,10 @@ bool World::neighborsStale() const noexcept {
     const Real growth = 2 * m_maxRadius * std::abs(m_scale - m_scaleAtRebuild) / m_scale;
     const Real wallTravel =
         m_walls.maxSpeedBetween(m_list.wallTime0, time()) * (time() - m_list.wallTime0) + growth;
+    // No particle can have moved farther than m_travelBound: with a margin of 1 % of the limit
+    // (far above the round-off of the positions' sums) the scan below would find none beyond it.
+    const Real half = 0.5 * m_config.skin - wallTravel;
+    if (m_list.x0.size() == m_store.size() && half > 0 && m_travelBound <= 0.99 * half) return false;
     return m_list.needsRebuild(m_store, m_config.skin, wallTravel, m_forceWork.threads);
 }
 
@@ -393,6 +400,7 @@ void World::replaceParticles(model::ParticleStore store, const std::vector<Real>
     updateTeam();
     m_list.rebuildWith(m_store, m_walls, m_config.skin, time(), *m_broad, m_laws, pairHistory, wallHistory,
                        outputCopy || !m_integrator->singleEvaluation(), m_forceWork.threads);
+    m_travelBound = 0;  // x0 = the positions now
     if (!countAsBuild) m_list.builds = builds;
     if (m_flow.active()) m_flow.refreshCandidates(m_store, m_maxRadius, m_config.skin, ownedEnd);
 }
@@ -589,6 +597,7 @@ void World::saveState(std::ostream& os) const {
 }
 
 void World::loadState(std::istream& is) {
+    m_travelBound = std::numeric_limits<Real>::infinity();  // not in the file: the scan decides
     const auto magic = readPod<std::uint64_t>(is);
     if (magic == 0x32454d44424c4e47ULL)
         throw std::runtime_error(

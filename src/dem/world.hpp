@@ -9,6 +9,7 @@
 #pragma once
 #include <cstdint>
 #include <iosfwd>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -312,6 +313,11 @@ private:
     ForceWorkspace m_forceWork;
     std::size_t m_particlesPerThread = 0;  ///< 0: kParticlesPerThread / kPolygonsPerThread
     ThreadGovernor m_governor;
+    /// [m] bound on every particle's displacement since the neighbour list's positions were taken:
+    /// the sum of the largest speed times dt (integrators whose speed bounds the displacement);
+    /// infinite when unknown (other integrators, after a resume). Below the skin's half the
+    /// neighbour check skips its O(N) scan: it would find no rebuild due either.
+    Real m_travelBound = std::numeric_limits<Real>::infinity();
     double m_stepStart = 0;  ///< [s] wall clock at beginStep, for the governor
     std::vector<Vec2> m_wallForce;
     ContactLog m_contactLog;
