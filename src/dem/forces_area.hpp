@@ -16,6 +16,7 @@
 #include "dem/forces.hpp"
 #include "geom/circle_contact.hpp"
 #include "geom/convex_contact.hpp"
+#include "geom/convex_crossings.hpp"
 
 namespace granulab::dem::area {
 
@@ -38,7 +39,12 @@ inline geom::AreaContact pairGeometry(const model::ParticleStore& s, const Shape
                                       geom::FeatureStats& features) noexcept {
     const bool pi = s.shape[i] != model::kDiskShape, pj = s.shape[j] != model::kDiskShape;
     const Vec2 ci{s.x[i], s.y[i]}, cj{s.x[j], s.y[j]};
-    if (pi && pj) return geom::trackPolygonContact(frameOf(s, sc, i), frameOf(s, sc, j), cache, features);
+    if (pi && pj) {
+        const geom::PolygonFrame fi = frameOf(s, sc, i), fj = frameOf(s, sc, j);
+        geom::AreaContact g;  // a persistent contact: both cached crossings hold (inlined)
+        if (geom::crossings::refreshCrossings(fi, fj, cache, features, g)) return g;
+        return geom::trackPolygonContact(fi, fj, cache, features);
+    }
     if (!pi && !pj) return geom::circleCircleContact(ci, s.radius[i], cj, s.radius[j]);
     if (!pi) {
         const auto f = frameOf(s, sc, j);
