@@ -35,8 +35,9 @@ inline geom::PolygonFrame frameOf(const model::ParticleStore& s, const ShapeCont
 
 /// Geometry of the pair (i, j), normal pushing i away from j, written to `out` (in place: the
 /// pair kernel's batch slot, so that the result is not copied through the stack).
-inline void pairGeometryInto(const model::ParticleStore& s, const ShapeContext& sc, std::uint32_t i, std::uint32_t j,
-                             geom::FeatureCache& cache, geom::FeatureStats& features, geom::AreaContact& out) noexcept {
+inline void pairGeometryInto(const model::ParticleStore& s, const ShapeContext& sc, std::uint32_t i,
+                             std::uint32_t j, geom::FeatureCache& cache, geom::FeatureStats& features,
+                             geom::AreaContact& out) noexcept {
     const bool pi = s.shape[i] != model::kDiskShape, pj = s.shape[j] != model::kDiskShape;
     const Vec2 ci{s.x[i], s.y[i]}, cj{s.x[j], s.y[j]};
     if (pi && pj) {

@@ -234,7 +234,8 @@ void gearPredictColumn(std::size_t begin, std::size_t end, Real h, Real* __restr
 /// Gear corrector (Eq. F.13 and Table F.1) of one degree of freedom over [begin, end), as above.
 void gearCorrectColumn(std::size_t begin, std::size_t end, Real h, Real c0, Real* __restrict pos,
                        Real* __restrict vel, const Real* __restrict force, const Real* __restrict inv,
-                       Real* __restrict r2, Real* __restrict r3, Real* __restrict r4, Real* __restrict r5) noexcept {
+                       Real* __restrict r2, Real* __restrict r3, Real* __restrict r4,
+                       Real* __restrict r5) noexcept {
     constexpr Real c1 = 251.0 / 360.0, c3 = 11.0 / 18.0, c4 = 1.0 / 6.0, c5 = 1.0 / 60.0;  // Table F.1, p = 2
     for (std::size_t i = begin; i < end; ++i) {
         const Real delta = 0.5 * h * h * force[i] * inv[i] - r2[i];  // Eq. F.13
@@ -278,8 +279,8 @@ bool GearPredictorCorrector::correct(model::ParticleStore& s, Real dt, int) noex
     parallelBlocks(m_threads, n, [&](std::size_t begin, std::size_t end, std::size_t) {
         for (int d = 0; d < 3; ++d) {
             auto [r2, r3, r4, r5] = higher[static_cast<std::size_t>(d)];
-            gearCorrectColumn(begin, end, dt, m_c0, dof.pos[d], dof.vel[d], dof.force[d], dof.inv[d], r2, r3, r4,
-                              r5);
+            gearCorrectColumn(begin, end, dt, m_c0, dof.pos[d], dof.vel[d], dof.force[d], dof.inv[d], r2, r3,
+                              r4, r5);
         }
     });
     return true;
