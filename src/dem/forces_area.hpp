@@ -16,6 +16,7 @@
 #include "dem/forces.hpp"
 #include "geom/circle_contact.hpp"
 #include "geom/convex_contact.hpp"
+#include "geom/convex_crossings.hpp"
 
 namespace granulab::dem::area {
 
@@ -32,24 +33,44 @@ inline geom::PolygonFrame frameOf(const model::ParticleStore& s, const ShapeCont
     return f;
 }
 
-/// Geometry of the pair (i, j), normal pushing i away from j.
-inline geom::AreaContact pairGeometry(const model::ParticleStore& s, const ShapeContext& sc, std::uint32_t i,
-                                      std::uint32_t j, geom::FeatureCache& cache,
-                                      geom::FeatureStats& features) noexcept {
+/// Geometry of the pair (i, j), normal pushing i away from j, written to `out` (in place: the
+/// pair kernel's batch slot, so that the result is not copied through the stack).
+inline void pairGeometryInto(const model::ParticleStore& s, const ShapeContext& sc, std::uint32_t i,
+                             std::uint32_t j, geom::FeatureCache& cache, geom::FeatureStats& features,
+                             geom::AreaContact& out) noexcept {
     const bool pi = s.shape[i] != model::kDiskShape, pj = s.shape[j] != model::kDiskShape;
     const Vec2 ci{s.x[i], s.y[i]}, cj{s.x[j], s.y[j]};
-    if (pi && pj) return geom::trackPolygonContact(frameOf(s, sc, i), frameOf(s, sc, j), cache, features);
-    if (!pi && !pj) return geom::circleCircleContact(ci, s.radius[i], cj, s.radius[j]);
+    if (pi && pj) {
+        const geom::PolygonFrame fi = frameOf(s, sc, i), fj = frameOf(s, sc, j);
+        // A persistent contact (both cached crossings hold) is refreshed inline.
+        if (!geom::crossings::refreshCrossings(fi, fj, cache, features, out))
+            out = geom::trackPolygonContact(fi, fj, cache, features);
+        return;
+    }
+    if (!pi && !pj) {
+        out = geom::circleCircleContact(ci, s.radius[i], cj, s.radius[j]);
+        return;
+    }
     if (!pi) {
         const auto f = frameOf(s, sc, j);
-        return geom::circlePolygonContact(ci, s.radius[i], f.corners, f.n);
+        out = geom::circlePolygonContact(ci, s.radius[i], f.corners, f.n);
+        return;
     }
     const auto f = frameOf(s, sc, i);
-    geom::AreaContact g = geom::circlePolygonContact(cj, s.radius[j], f.corners, f.n);
+    geom::AreaContact& g = out;
+    g = geom::circlePolygonContact(cj, s.radius[j], f.corners, f.n);
     g.normal = -g.normal;  // computed for the disk j
     std::swap(g.c1, g.c2);
     g.pull = -g.pull;  // the closed overlap boundary: sum of n L and its moment vanish
     g.twist = -g.twist;
+}
+
+/// Geometry of the pair (i, j), normal pushing i away from j.
+inline geom::AreaContact pairGeometry(const model::ParticleStore& s, const ShapeContext& sc, std::uint32_t i,
+                                      std::uint32_t j, geom::FeatureCache& cache,
+                                      geom::FeatureStats& features) noexcept {
+    geom::AreaContact g;
+    pairGeometryInto(s, sc, i, j, cache, features, g);
     return g;
 }
 

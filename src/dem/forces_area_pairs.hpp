@@ -113,7 +113,7 @@ void areaPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
             continue;
         }
         Pending& q = batch[pending];
-        q.g = area::pairGeometry(s, sc, i, j, list.features[p], features);
+        area::pairGeometryInto(s, sc, i, j, list.features[p], features, q.g);
         if (!q.g.touching) {
             xiHist[p] = 0;
             areaHist[p] = 0;
