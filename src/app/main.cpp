@@ -68,9 +68,9 @@ int main(int argc, char** argv) {
         "output.gc2d: run although the output folder holds the lock file <basename>.glk (gc2d's -l)");
     run->add_flag("--quiet,-q", runOpt.quiet, "no progress output");
     std::string threads;
-    run->add_option(
-        "--threads,-t", threads,
-        "threads of the DEM step (0: every core); the same as --set run.threads=N, which it overrides");
+    run->add_option("--threads,-t", threads,
+                    "threads of the DEM step (exactly N; 0: chosen by measurement during the run); the same "
+                    "as --set run.threads=N, which it overrides");
     run->footer(
         "example: granulab run examples/disks_in_box.toml --set run.end_time=0.05 --out runs/short\n"
         "Ctrl-C (SIGINT) or SIGTERM stops after the current step or event with a checkpoint; exit\n"

@@ -25,7 +25,8 @@ struct RunDef {
     Real startTime =
         0;  ///< [s] dem: the clock at the start (a gc2d gso restart: TIME t0 t1), a whole number of dt
     Real benchmarkFrom = -1;  ///< [s] report throughput separately from this time on (<0: off)
-    int threads = 0;          ///< dem: threads of the step (0: every core the process may use)
+    int threads =
+        0;  ///< dem: threads of the step (N > 0: exactly N; 0: the automatic count, core/thread_governor.hpp)
     bool loadBalance = true;  ///< dem under mpirun: move the slab cuts by contacts (docs/physics/dem-mpi.md)
     std::string title;
     SourceLoc loc;

@@ -233,7 +233,8 @@ TEST(DemThreads, TilesDependOnTheParticleCountOnly) {
 TEST(DemThreads, SceneAndCommandLineSetTheThreadCount) {
     dem::World w = test::makeWorldFromToml(kDiskBed, {io::parseOverride("run.threads=3")});
     EXPECT_EQ(w.threads(), 3);
-    dem::World all = test::makeWorldFromToml(kDiskBed);  // 0: every core this process may use
+    dem::World all =
+        test::makeWorldFromToml(kDiskBed);  // 0: automatic, at most every core this process may use
     EXPECT_EQ(all.threads(), availableCores());
     EXPECT_ANY_THROW(test::makeWorldFromToml(kDiskBed, {io::parseOverride("run.threads=-1")}));
 }
