@@ -44,6 +44,7 @@ void ThreadGovernor::setWorkLimit(int byWork, std::string why) {
         startWindow();
     }
     if (m_team > most) {  // fewer particles (an outlet): the team shrinks, and is measured anew
+        m_probing = false;
         m_team = most;
         m_cost = -1;
         startWindow();
