@@ -8,6 +8,7 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #if GRANULAB_HAVE_OPENMP
 #include <omp.h>
@@ -112,23 +113,60 @@ void parallelBlocks(int threads, std::size_t n, Fn&& fn) noexcept {
 #endif
 }
 
+/// Runs fn(begin, end, part) on the contiguous slot ranges `cuts` (part k: [cuts[k], cuts[k + 1]),
+/// on thread k of the team, the same thread that takes range k in parallelRanges). The force split
+/// sets the cuts of a step (dem/forces.cpp splitTiles), and predict, correct, the neighbour check
+/// and the world corners follow them: each thread then touches in every stage the particles of its
+/// own force tiles, whose cache lines stay in its core, instead of a block that half belongs to the
+/// other core (docs/physics/dem-threads.md, "Performance"). Without cuts (nullptr), or when they do
+/// not cover [0, n) in threads + 1 entries, it is parallelBlocks(threads, n, fn). For elementwise
+/// work and exact reductions only, as parallelBlocks.
+template <class Fn>
+void parallelSlots(int threads, const std::vector<std::uint32_t>* cuts, std::size_t n, Fn&& fn) noexcept {
+    if (threads > 1 && cuts != nullptr && cuts->size() == static_cast<std::size_t>(threads) + 1 &&
+        cuts->front() == 0 && cuts->back() == n) {
+        const std::uint32_t* c = cuts->data();
+#if GRANULAB_HAVE_OPENMP
+#pragma omp parallel num_threads(threads)
+        {
+            const int team = omp_get_num_threads();
+            for (int r = omp_get_thread_num(); r < threads; r += team)
+                fn(std::size_t{c[r]}, std::size_t{c[r + 1]}, static_cast<std::size_t>(r));
+        }
+#else
+        for (int r = 0; r < threads; ++r)
+            fn(std::size_t{c[r]}, std::size_t{c[r + 1]}, static_cast<std::size_t>(r));
+#endif
+        return;
+    }
+    parallelBlocks(threads, n, fn);
+}
+
 /// Largest value of a NaN-propagating maximum: NaN wins, so that a blow-up is seen.
 inline double maxOrNaN(double a, double b) noexcept {
     return (b > a || b != b) ? b : a;
 }
 
-/// Maximum over the blocks of parallelBlocks of fn(begin, end) >= 0 (NaN wins); 0 for n = 0.
+/// Maximum over the ranges of parallelSlots of fn(begin, end) >= 0 (NaN wins); 0 for n = 0. The
+/// maximum is exact, so the result does not depend on the ranges.
 template <class Fn>
-double parallelMax(int threads, std::size_t n, Fn&& fn) noexcept {
+double parallelMax(int threads, const std::vector<std::uint32_t>* cuts, std::size_t n, Fn&& fn) noexcept {
     constexpr int kMaxBlocks = 64;
     const int team = threads < kMaxBlocks ? threads : kMaxBlocks;
-    double partial[kMaxBlocks] = {};
-    parallelBlocks(team, n, [&](std::size_t begin, std::size_t end, std::size_t block) {
+    double partial[kMaxBlocks];
+    for (double& p : partial) p = 0;
+    parallelSlots(team, cuts, n, [&](std::size_t begin, std::size_t end, std::size_t block) {
         partial[block] = fn(begin, end);
     });
     double m = 0;
-    for (std::size_t b = 0; b < blockCount(team, n); ++b) m = maxOrNaN(m, partial[b]);
+    for (int b = 0; b < team; ++b) m = maxOrNaN(m, partial[b]);
     return m;
+}
+
+/// Maximum over the blocks of parallelBlocks of fn(begin, end) >= 0 (NaN wins); 0 for n = 0.
+template <class Fn>
+double parallelMax(int threads, std::size_t n, Fn&& fn) noexcept {
+    return parallelMax(threads, nullptr, n, fn);
 }
 
 }  // namespace granulab

@@ -12,6 +12,7 @@
 #include "dem/forces.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <type_traits>
 
@@ -149,10 +150,12 @@ void gatherDeferred(std::uint32_t t, model::ParticleStore& s, const NeighborList
     }
 }
 
-/// Splits the tiles into ws.threads contiguous runs of about equal work (ws.cuts): a tile's work is
-/// estimated from its slots, its candidate pairs and the contacts it had at the last evaluation (a
-/// touching pair costs several times an apart one). The split changes only the work per thread,
-/// never the order in which a grain's forces are added.
+/// Splits the tiles into ws.threads contiguous runs of about equal work (ws.cuts, and ws.slotCuts
+/// in slots). A tile's work is its measured time at the last evaluations (ws.tileSeconds: it knows
+/// what no count does, the shapes, the walls, the cache misses); until every tile has been
+/// measured, an estimate from its slots, its candidate pairs and the contacts it had at the last
+/// evaluation (a touching pair costs several times an apart one). The split changes only the work
+/// per thread, never the order in which a grain's forces are added.
 void splitTiles(const NeighborList& list, ForceWorkspace& ws) noexcept {
     const std::uint32_t tiles = list.tiles.count;
     const int parts = std::max(1, std::min<int>(ws.threads, static_cast<int>(tiles)));
@@ -160,10 +163,19 @@ void splitTiles(const NeighborList& list, ForceWorkspace& ws) noexcept {
     if (parts == 1) {
         ws.cuts[0] = 0;
         ws.cuts[1] = tiles;
+        ws.slotCuts.clear();
+        ws.tileSeconds.clear();  // stale once the thread count changes back
         return;
     }
     ws.tileWork.resize(tiles);
+    if (ws.tileSeconds.size() != tiles) ws.tileSeconds.assign(tiles, 0.0);
+    const bool measured =
+        std::all_of(ws.tileSeconds.begin(), ws.tileSeconds.end(), [](double s) { return s > 0; });
     for (std::uint32_t t = 0; t < tiles; ++t) {
+        if (measured) {
+            ws.tileWork[t] = ws.tileSeconds[t];
+            continue;
+        }
         const auto pairs = list.tileBegin(list.pairs, t + 1) - list.tileBegin(list.pairs, t);
         const auto wallPairs = list.tileBegin(list.wallPairs, t + 1) - list.tileBegin(list.wallPairs, t);
         const ForceStats& last = ws.counters[t].stats;
@@ -172,6 +184,14 @@ void splitTiles(const NeighborList& list, ForceWorkspace& ws) noexcept {
                          6.0 * static_cast<double>(last.contacts + last.wallContacts);
     }
     splitByWeight(ws.tileWork.data(), tiles, parts, ws.cuts.data());
+    ws.slotCuts.resize(ws.cuts.size());
+    for (std::size_t k = 0; k < ws.cuts.size(); ++k)
+        ws.slotCuts[k] = ws.cuts[k] < tiles ? list.tiles.begin(ws.cuts[k]) : list.tiles.slots;
+}
+
+/// Seconds on a monotonic clock (the tiles' times; a few tens of ns a call).
+double nowSeconds() noexcept {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
 }  // namespace
@@ -193,20 +213,37 @@ void computeForces(model::ParticleStore& s, const model::WallSet& walls, Neighbo
     ws.wallStride = (nWalls + kPerLine - 1) / kPerLine * kPerLine;
     ws.tileWallForce.resize(tiles * ws.wallStride);
     if (log && ws.tileLogs.size() < tiles) ws.tileLogs.resize(tiles);
-    shapes.update(s, ws.threads);
+    shapes.update(s, ws.threads, &ws.slotCuts);
     splitTiles(list, ws);
     // Each thread takes a contiguous run of tiles of about equal work, then gathers the deferred
     // shares of the same tiles after a barrier.
     parallelRanges(
         ws.threads, ws.cuts.data(),
         [&](std::size_t, std::uint32_t begin, std::uint32_t end) {
-            for (std::uint32_t t = begin; t < end; ++t)
+            if (ws.cuts.size() <= 2) {  // one thread: nothing to balance, no clock
+                for (std::uint32_t t = begin; t < end; ++t)
+                    tileForces(t, s, walls, list, laws, body, drift, dt, trialHistory, shapes, ws,
+                               log != nullptr);
+                return;
+            }
+            double start = nowSeconds();
+            for (std::uint32_t t = begin; t < end; ++t) {
                 tileForces(t, s, walls, list, laws, body, drift, dt, trialHistory, shapes, ws,
                            log != nullptr);
+                const double stop = nowSeconds();
+                // Smoothed over about 4 evaluations: a preempted tile does not swing the split.
+                const double took = std::max(stop - start, 1e-9);
+                double& seconds = ws.tileSeconds[t];
+                seconds = seconds > 0 ? 0.75 * seconds + 0.25 * took : took;
+                start = stop;
+            }
         },
         [&](std::size_t, std::uint32_t begin, std::uint32_t end) {
-            if (list.crossPairs() == 0) return;
-            for (std::uint32_t t = begin; t < end; ++t) gatherDeferred(t, s, list, ws);
+            if (list.crossPairs() != 0)
+                for (std::uint32_t t = begin; t < end; ++t) gatherDeferred(t, s, list, ws);
+            // The forces of these tiles' grains are complete: the fused correction (World).
+            if (ws.finishSlots && begin < end)
+                ws.finishSlots(ws.finishContext, list.tiles.begin(begin), list.tiles.end(end - 1));
         });
     // Sums over tiles in tile order: the same for any thread count.
     stats = ForceStats{};

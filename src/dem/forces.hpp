@@ -59,7 +59,8 @@ struct ShapeContext {
     Real scale = 1;  ///< global size scaling s(t) of the body corners (gc2d 2.4, Eq. 2.30/2.31)
     /// Recomputes the world corners from positions, angles and the scale s (gc2d Eq. 2.35, angle
     /// counter-clockwise), on `threads` threads; dem/shape_context.cpp.
-    void update(const model::ParticleStore& s, int threads = 1);
+    void update(const model::ParticleStore& s, int threads = 1,
+                const std::vector<std::uint32_t>* cuts = nullptr);
 };
 
 struct ForceStats {
@@ -102,7 +103,21 @@ struct ForceWorkspace {
     std::vector<ContactLog> tileLogs;  ///< filled on the steps that record contacts
     /// The threads' runs of tiles: thread k takes tiles [cuts[k], cuts[k + 1]) (forces.cpp splitTiles).
     std::vector<std::uint32_t> cuts;
-    std::vector<double> tileWork;  ///< estimated work of each tile, for the split
+    std::vector<double> tileWork;  ///< work of each tile, for the split
+    /// [s] measured time of each tile's pairs and walls, smoothed over steps (on several threads
+    /// only; empty or 0 where not yet measured).
+    std::vector<double> tileSeconds;
+    /// The same runs in slots: thread k's tiles cover slots [slotCuts[k], slotCuts[k + 1]). The
+    /// other per-particle stages follow them (parallelSlots), so that a thread integrates the
+    /// grains whose forces it summed. Empty on one thread.
+    std::vector<std::uint32_t> slotCuts;
+    /// When set, called by each thread with the slots [begin, end) of its tiles as soon as their
+    /// forces are complete (after its gathers), inside the force stage's parallel region: World
+    /// fuses the integrator's correction here (Integrator::correctsBySlots), which saves a
+    /// parallel region per step and finds the forces still in the core's cache. It must touch
+    /// only those slots. nullptr: none.
+    void (*finishSlots)(void* context, std::size_t begin, std::size_t end) noexcept = nullptr;
+    void* finishContext = nullptr;
 };
 
 /// Overwrites f and torque with body forces, then adds all contact forces. Updates the

@@ -44,19 +44,24 @@ struct Dofs {
           inv{s.invMass.data(), s.invMass.data(), s.invInertia.data()} {}
 };
 
-/// Largest |v| of the store; NaN propagates so that the caller sees a blow-up.
-Real maxSpeed(const model::ParticleStore& s, int threads) noexcept {
-    return std::sqrt(parallelMax(threads, s.size(), [&](std::size_t begin, std::size_t end) {
-        const Real* __restrict vx = s.vx.data();
-        const Real* __restrict vy = s.vy.data();
-        Real maxV2 = 0;
-        bool nonFinite = false;
-        for (std::size_t i = begin; i < end; ++i) {
-            const Real v2 = vx[i] * vx[i] + vy[i] * vy[i];
-            maxV2 = v2 > maxV2 ? v2 : maxV2;
-            nonFinite |= !(v2 == v2);
-        }
-        return nonFinite ? std::numeric_limits<Real>::quiet_NaN() : maxV2;
+/// Largest |v|^2 over the slots [begin, end); NaN propagates so that the caller sees a blow-up.
+Real maxSquaredSpeed(const model::ParticleStore& s, std::size_t begin, std::size_t end) noexcept {
+    const Real* __restrict vx = s.vx.data();
+    const Real* __restrict vy = s.vy.data();
+    Real maxV2 = 0;
+    bool nonFinite = false;
+    for (std::size_t i = begin; i < end; ++i) {
+        const Real v2 = vx[i] * vx[i] + vy[i] * vy[i];
+        maxV2 = v2 > maxV2 ? v2 : maxV2;
+        nonFinite |= !(v2 == v2);
+    }
+    return nonFinite ? std::numeric_limits<Real>::quiet_NaN() : maxV2;
+}
+
+/// Largest |v| of the store (NaN wins).
+Real maxSpeed(const model::ParticleStore& s, int threads, const std::vector<std::uint32_t>* cuts) noexcept {
+    return std::sqrt(parallelMax(threads, cuts, s.size(), [&](std::size_t begin, std::size_t end) {
+        return maxSquaredSpeed(s, begin, end);
     }));
 }
 }  // namespace
@@ -67,7 +72,7 @@ Real VelocityVerlet::predict(model::ParticleStore& s, Real dt) noexcept {
     const std::size_t n = s.size();
     m_half.resize(n);  // no-op after the first step
     const Real h = 0.5 * dt;
-    return std::sqrt(parallelMax(m_threads, n, [&](std::size_t begin, std::size_t end) {
+    return std::sqrt(parallelMax(m_threads, m_slotCuts, n, [&](std::size_t begin, std::size_t end) {
         // Block-local restrict pointers: the loop vectorizes as in a plain function.
         Real* __restrict x = s.x.data();
         Real* __restrict y = s.y.data();
@@ -105,26 +110,30 @@ Real VelocityVerlet::predict(model::ParticleStore& s, Real dt) noexcept {
 }
 
 bool VelocityVerlet::correct(model::ParticleStore& s, Real dt, int) noexcept {
-    const Real h = 0.5 * dt;
-    parallelBlocks(m_threads, s.size(), [&](std::size_t begin, std::size_t end, std::size_t) {
-        Real* __restrict vx = s.vx.data();
-        Real* __restrict vy = s.vy.data();
-        Real* __restrict w = s.omega.data();
-        const Real* __restrict hvx = m_half[0];
-        const Real* __restrict hvy = m_half[1];
-        const Real* __restrict hw = m_half[2];
-        const Real* __restrict fx = s.fx.data();
-        const Real* __restrict fy = s.fy.data();
-        const Real* __restrict tq = s.torque.data();
-        const Real* __restrict im = s.invMass.data();
-        const Real* __restrict ii = s.invInertia.data();
-        for (std::size_t i = begin; i < end; ++i) {
-            vx[i] = hvx[i] + h * fx[i] * im[i];
-            vy[i] = hvy[i] + h * fy[i] * im[i];
-            w[i] = hw[i] + h * tq[i] * ii[i];
-        }
-    });
+    forSlots(s.size(),
+             [&](std::size_t begin, std::size_t end, std::size_t) { correctSlots(s, dt, begin, end); });
     return true;
+}
+
+void VelocityVerlet::correctSlots(model::ParticleStore& s, Real dt, std::size_t begin,
+                                  std::size_t end) noexcept {
+    const Real h = 0.5 * dt;
+    Real* __restrict vx = s.vx.data();
+    Real* __restrict vy = s.vy.data();
+    Real* __restrict w = s.omega.data();
+    const Real* __restrict hvx = m_half[0];
+    const Real* __restrict hvy = m_half[1];
+    const Real* __restrict hw = m_half[2];
+    const Real* __restrict fx = s.fx.data();
+    const Real* __restrict fy = s.fy.data();
+    const Real* __restrict tq = s.torque.data();
+    const Real* __restrict im = s.invMass.data();
+    const Real* __restrict ii = s.invInertia.data();
+    for (std::size_t i = begin; i < end; ++i) {
+        vx[i] = hvx[i] + h * fx[i] * im[i];
+        vy[i] = hvy[i] + h * fy[i] * im[i];
+        w[i] = hw[i] + h * tq[i] * ii[i];
+    }
 }
 
 // ------------------------------------------------------------------ explicit Euler
@@ -132,7 +141,7 @@ bool VelocityVerlet::correct(model::ParticleStore& s, Real dt, int) noexcept {
 Real ExplicitEuler::predict(model::ParticleStore& s, Real dt) noexcept {
     const std::size_t n = s.size();
     m_old.resize(n);
-    parallelBlocks(m_threads, n, [&](std::size_t begin, std::size_t end, std::size_t) {
+    forSlots(n, [&](std::size_t begin, std::size_t end, std::size_t) {
         for (std::size_t i = begin; i < end; ++i) {
             m_old[0][i] = s.vx[i];
             m_old[1][i] = s.vy[i];
@@ -145,7 +154,7 @@ Real ExplicitEuler::predict(model::ParticleStore& s, Real dt) noexcept {
             s.omega[i] += dt * s.torque[i] * s.invInertia[i];
         }
     });
-    return maxSpeed(s, m_threads);
+    return maxSpeed(s, m_threads, m_slotCuts);
 }
 
 bool ExplicitEuler::correct(model::ParticleStore&, Real, int) noexcept {
@@ -165,7 +174,7 @@ Real PredictorCorrector::predict(model::ParticleStore& s, Real dt) noexcept {
     Real* vn[3] = {m_state[3], m_state[4], m_state[5]};
     Real* drift[3] = {m_state[6], m_state[7], m_state[8]};
     const Dofs dof(s);
-    parallelBlocks(m_threads, n, [&](std::size_t begin, std::size_t end, std::size_t) {
+    forSlots(n, [&](std::size_t begin, std::size_t end, std::size_t) {
         for (int d = 0; d < 3; ++d)
             for (std::size_t i = begin; i < end; ++i) {
                 const Real a = dof.force[d][i] * dof.inv[d][i];  // acceleration accepted at t (Eq. 3.16-3.19)
@@ -176,7 +185,7 @@ Real PredictorCorrector::predict(model::ParticleStore& s, Real dt) noexcept {
                 drift[d][i] = m_maxIterations == 0 ? dof.vel[d][i] : 0.5 * (vn[d][i] + dof.vel[d][i]);
             }
     });
-    return maxSpeed(s, m_threads);
+    return maxSpeed(s, m_threads, m_slotCuts);
 }
 
 bool PredictorCorrector::correct(model::ParticleStore& s, Real dt, int iteration) noexcept {
@@ -187,7 +196,7 @@ bool PredictorCorrector::correct(model::ParticleStore& s, Real dt, int iteration
     Real* drift[3] = {m_state[6], m_state[7], m_state[8]};
     const Dofs dof(s);
     // Eq. 3.24: the largest |a^c - a^p| over all particles and components.
-    const Real worst = parallelMax(m_threads, n, [&](std::size_t begin, std::size_t end) {
+    const Real worst = parallelMax(m_threads, m_slotCuts, n, [&](std::size_t begin, std::size_t end) {
         Real w = 0;
         for (int d = 0; d < 3; ++d)
             for (std::size_t i = begin; i < end; ++i)
@@ -196,7 +205,7 @@ bool PredictorCorrector::correct(model::ParticleStore& s, Real dt, int iteration
     });
     if (worst <= m_tolerance || iteration >= m_maxIterations || worst != worst) return true;
     const Real c = m_corrector;
-    parallelBlocks(m_threads, n, [&](std::size_t begin, std::size_t end, std::size_t) {
+    forSlots(n, [&](std::size_t begin, std::size_t end, std::size_t) {
         for (int d = 0; d < 3; ++d)
             for (std::size_t i = begin; i < end; ++i) {
                 const Real da = dof.force[d][i] * dof.inv[d][i] - ap[d][i];
@@ -256,7 +265,8 @@ Real GearPredictorCorrector::predict(model::ParticleStore& s, Real dt) noexcept 
     std::array<std::array<Real*, 4>, 3> higher;
     for (int d = 0; d < 3; ++d) higher[static_cast<std::size_t>(d)] = higherDerivatives(d);
     const bool start = !m_started;
-    parallelBlocks(m_threads, n, [&](std::size_t begin, std::size_t end, std::size_t) {
+    // The largest speed of each range right after its prediction, in the same parallel region.
+    const Real maxV2 = parallelMax(m_threads, m_slotCuts, n, [&](std::size_t begin, std::size_t end) {
         for (int d = 0; d < 3; ++d) {
             auto [r2, r3, r4, r5] = higher[static_cast<std::size_t>(d)];
             if (start)  // start from the forces at t = 0, higher derivatives zero
@@ -266,24 +276,26 @@ Real GearPredictorCorrector::predict(model::ParticleStore& s, Real dt) noexcept 
                 }
             gearPredictColumn(begin, end, dt, dof.pos[d], dof.vel[d], r2, r3, r4, r5, m_state[12 + d]);
         }
+        return maxSquaredSpeed(s, begin, end);
     });
     m_started = true;
-    return maxSpeed(s, m_threads);
+    return std::sqrt(maxV2);
 }
 
 bool GearPredictorCorrector::correct(model::ParticleStore& s, Real dt, int) noexcept {
-    const std::size_t n = s.size();
-    const Dofs dof(s);
-    std::array<std::array<Real*, 4>, 3> higher;
-    for (int d = 0; d < 3; ++d) higher[static_cast<std::size_t>(d)] = higherDerivatives(d);
-    parallelBlocks(m_threads, n, [&](std::size_t begin, std::size_t end, std::size_t) {
-        for (int d = 0; d < 3; ++d) {
-            auto [r2, r3, r4, r5] = higher[static_cast<std::size_t>(d)];
-            gearCorrectColumn(begin, end, dt, m_c0, dof.pos[d], dof.vel[d], dof.force[d], dof.inv[d], r2, r3,
-                              r4, r5);
-        }
-    });
+    forSlots(s.size(),
+             [&](std::size_t begin, std::size_t end, std::size_t) { correctSlots(s, dt, begin, end); });
     return true;
+}
+
+void GearPredictorCorrector::correctSlots(model::ParticleStore& s, Real dt, std::size_t begin,
+                                          std::size_t end) noexcept {
+    const Dofs dof(s);
+    for (int d = 0; d < 3; ++d) {
+        auto [r2, r3, r4, r5] = higherDerivatives(d);
+        gearCorrectColumn(begin, end, dt, m_c0, dof.pos[d], dof.vel[d], dof.force[d], dof.inv[d], r2, r3, r4,
+                          r5);
+    }
 }
 
 void GearPredictorCorrector::save(std::ostream& os) const {

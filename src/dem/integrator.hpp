@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "core/parallel.hpp"
 #include "model/particle_store.hpp"
 
 namespace granulab::dem {
@@ -48,6 +49,13 @@ public:
     /// Stage 7 after a force evaluation at the trial state: returns true when the step is
     /// accepted; false asks for another force evaluation at the updated trial state.
     virtual bool correct(model::ParticleStore& s, Real dt, int iteration) noexcept = 0;
+    /// True if correct() is elementwise, always accepts, and a slot's correction needs nothing but
+    /// that slot's own state and forces: World then runs correctSlots() on each thread's slots
+    /// inside the force stage's parallel region, as soon as their forces are complete.
+    virtual bool correctsBySlots() const noexcept { return false; }
+    /// correct() on the slots [begin, end) only (for correctsBySlots() integrators; iteration 0).
+    virtual void correctSlots(model::ParticleStore&, Real /*dt*/, std::size_t /*begin*/,
+                              std::size_t /*end*/) noexcept {}
     /// The drift velocities of the step in progress (valid between predict and correct).
     virtual DriftVelocities driftVelocities() const noexcept = 0;
     /// True if every step has exactly one force evaluation (contact history is then updated in
@@ -71,9 +79,19 @@ public:
     const StateColumns* state() const noexcept { return const_cast<Integrator*>(this)->state(); }
     /// Threads of predict and correct (elementwise loops: the results do not depend on them).
     void setThreads(int threads) noexcept { m_threads = threads > 1 ? threads : 1; }
+    /// The slot ranges of the threads (parallelSlots; the force split's, so that a thread integrates
+    /// the particles whose forces it summed); nullptr: equal blocks. The vector must outlive the
+    /// integrator's steps (World's ForceWorkspace).
+    void setSlotCuts(const std::vector<std::uint32_t>* cuts) noexcept { m_slotCuts = cuts; }
 
 protected:
+    /// parallelSlots over the store's n slots on the integrator's threads and ranges.
+    template <class Fn>
+    void forSlots(std::size_t n, Fn&& fn) const noexcept {
+        parallelSlots(m_threads, m_slotCuts, n, fn);
+    }
     int m_threads = 1;
+    const std::vector<std::uint32_t>* m_slotCuts = nullptr;
 };
 
 /// Columns of per-particle integrator state, reordered and sized together.
@@ -112,6 +130,8 @@ public:
     /// x(t + dt) = x(t) + dt v(t + dt/2), and predict returns the largest |v(t + dt/2)|.
     bool speedBoundsDisplacement() const noexcept override { return true; }
     bool correct(model::ParticleStore& s, Real dt, int iteration) noexcept override;
+    bool correctsBySlots() const noexcept override { return true; }
+    void correctSlots(model::ParticleStore& s, Real dt, std::size_t begin, std::size_t end) noexcept override;
     DriftVelocities driftVelocities() const noexcept override { return {m_half[0], m_half[1], m_half[2]}; }
     StateColumns* state() noexcept override { return &m_half; }
     void permute(const std::vector<std::uint32_t>& order) override { m_half.permute(order); }
@@ -174,6 +194,8 @@ public:
     const char* name() const noexcept override { return "gear"; }
     Real predict(model::ParticleStore& s, Real dt) noexcept override;
     bool correct(model::ParticleStore& s, Real dt, int iteration) noexcept override;
+    bool correctsBySlots() const noexcept override { return true; }
+    void correctSlots(model::ParticleStore& s, Real dt, std::size_t begin, std::size_t end) noexcept override;
     DriftVelocities driftVelocities() const noexcept override {
         return {m_state[12], m_state[13], m_state[14]};
     }

@@ -12,13 +12,13 @@
 
 namespace granulab::dem {
 
-bool NeighborList::needsRebuild(const model::ParticleStore& s, Real skin, Real wallTravel,
-                                int threads) const noexcept {
+bool NeighborList::needsRebuild(const model::ParticleStore& s, Real skin, Real wallTravel, int threads,
+                                const std::vector<std::uint32_t>* cuts) const noexcept {
     if (x0.size() != s.size()) return true;
     const Real half = 0.5 * skin - wallTravel;
     if (half <= 0) return true;
     const Real limit2 = half * half;
-    const Real max2 = parallelMax(threads, s.size(), [&](std::size_t begin, std::size_t end) {
+    const Real max2 = parallelMax(threads, cuts, s.size(), [&](std::size_t begin, std::size_t end) {
         const Real* __restrict x = s.x.data();
         const Real* __restrict y = s.y.data();
         const Real* __restrict px = x0.data();

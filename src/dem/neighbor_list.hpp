@@ -114,8 +114,9 @@ public:
 
     /// True if some particle may have moved into range since the last rebuild: the largest
     /// displacement plus the wall travel exceeds skin/2 (or is not finite).
-    bool needsRebuild(const model::ParticleStore& s, Real skin, Real wallTravel,
-                      int threads = 1) const noexcept;
+    /// `threads` and `cuts` as parallelSlots (the result does not depend on them).
+    bool needsRebuild(const model::ParticleStore& s, Real skin, Real wallTravel, int threads = 1,
+                      const std::vector<std::uint32_t>* cuts = nullptr) const noexcept;
     void commitHistory() noexcept {
         pairs.commitHistory();
         wallPairs.commitHistory();

@@ -9,7 +9,8 @@
 
 namespace granulab::dem {
 
-void ShapeContext::update(const model::ParticleStore& s, int threads) {
+void ShapeContext::update(const model::ParticleStore& s, int threads,
+                          const std::vector<std::uint32_t>* cuts) {
     if (!anyPolygon) return;
     GL_ASSERT(pool != nullptr, "shape pool set before the first update");
     const std::size_t n = s.size();
@@ -21,7 +22,7 @@ void ShapeContext::update(const model::ParticleStore& s, int threads) {
         if (s.shape[i] != model::kDiskShape) total += pool->count[s.shape[i]];
     }
     world.resize(total);
-    parallelBlocks(threads, n, [&](std::size_t begin, std::size_t end, std::size_t) {
+    parallelSlots(threads, cuts, n, [&](std::size_t begin, std::size_t end, std::size_t) {
         for (std::size_t i = begin; i < end; ++i) {
             const std::uint32_t k = s.shape[i];
             if (k == model::kDiskShape) continue;

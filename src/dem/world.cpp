@@ -301,6 +301,9 @@ std::uint32_t World::beginStep() {
     Real maxSpeed;
     {  // 1 predict. reads: x, v, f; writes: x, v (half step)
         ScopedStage t(m_timers, Stage::Predict);
+        // The threads integrate the slots of their last force tiles (parallelSlots); set here, at
+        // every step, so that the pointer follows the workspace wherever the world is.
+        m_integrator->setSlotCuts(&m_forceWork.slotCuts);
         maxSpeed = m_integrator->predict(m_store, dt);
     }
     ++m_step;
@@ -337,7 +340,13 @@ bool World::neighborsStale() const noexcept {
     // (far above the round-off of the positions' sums) the scan below would find none beyond it.
     const Real half = 0.5 * m_config.skin - wallTravel;
     if (m_list.x0.size() == m_store.size() && half > 0 && m_travelBound <= 0.99 * half) return false;
-    return m_list.needsRebuild(m_store, m_config.skin, wallTravel, m_forceWork.threads);
+    return m_list.needsRebuild(m_store, m_config.skin, wallTravel, m_forceWork.threads,
+                               &m_forceWork.slotCuts);
+}
+
+void World::correctSlotsOf(void* world, std::size_t begin, std::size_t end) noexcept {
+    auto& w = *static_cast<World*>(world);
+    w.m_integrator->correctSlots(w.m_store, w.m_config.dt, begin, end);
 }
 
 std::uint32_t World::finishStep(IterationLink* link) {
@@ -346,19 +355,28 @@ std::uint32_t World::finishStep(IterationLink* link) {
     // 4+6+7: force evaluation(s) at the trial state and correction, until the integrator accepts.
     // Iterating integrators see trial springs; the accepted ones are committed once per step.
     const bool trial = !m_integrator->singleEvaluation();
+    // An elementwise correction runs inside the force stage, each thread on its own tiles' slots as
+    // soon as their forces are complete (no parallel region of its own; the stage timers count it
+    // under forces). Field forces and attraction are added after the contact forces: not then.
+    const bool fused = m_integrator->correctsBySlots() && !trial && !m_field && !m_config.attraction;
     const BodyForces body = bodyForcesAt(m_step);
     for (int iteration = 0;; ++iteration) {
         {  // 4+6 narrow phase + contact laws + body forces. reads: x, v, omega; writes: f, torque, history
             ScopedStage t(m_timers, Stage::Forces);
+            if (fused) {
+                m_forceWork.finishSlots = &World::correctSlotsOf;
+                m_forceWork.finishContext = this;
+            }
             evaluateForces(body, m_integrator->driftVelocities(), trial);
+            m_forceWork.finishSlots = nullptr;
         }
         if (m_field || m_config.attraction) {  // 6 fluid forces and attraction
             ScopedStage t(m_timers, Stage::Fluid);
             evaluateFieldForces(body);
         }
         ++m_forceEvaluations;
-        bool accepted;
-        {  // 7 correct. reads: f, torque; writes: x, v, omega
+        bool accepted = true;
+        if (!fused) {  // 7 correct. reads: f, torque; writes: x, v, omega
             ScopedStage t(m_timers, Stage::Correct);
             accepted = m_integrator->correct(m_store, dt, iteration);
         }

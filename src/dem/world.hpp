@@ -286,6 +286,8 @@ private:
     /// Hands team() to the force workspace, the integrator and the broad phase.
     void applyTeam() noexcept;
     void evaluateForces(const BodyForces& body, const DriftVelocities& drift, bool trial);
+    /// The integrator's correction of slots [begin, end) of `world` (ForceWorkspace::finishSlots).
+    static void correctSlotsOf(void* world, std::size_t begin, std::size_t end) noexcept;
     /// Fluid forces and mutual attraction (after the contact forces; stage Fluid).
     void evaluateFieldForces(const BodyForces& body);
     BodyForces bodyForcesAt(std::int64_t step) const noexcept;
