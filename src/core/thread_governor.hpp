@@ -4,7 +4,8 @@
 // gc2d spec section 5.4 runs the step's phases on threads). The results of the DEM step do not
 // depend on the thread count (dem/slot_tiles.hpp), so the count may change at any step. The
 // governor starts on one thread, runs a larger team for a short window of steps, keeps whichever
-// had the shorter wall time per step, and measures again from time to time (less often after each
+// had the shorter wall time per step (a trial's first step, which starts its threads, is not
+// measured), and measures again from time to time (less often after each
 // try that lost), so that it follows a machine whose cores become busy (other runs, a build) or
 // idle again. A trial that is clearly slower stops after a step or two: on busy cores a barrier may
 // wait for a whole time slice of the operating system. Where each thread would get less work than
@@ -63,6 +64,7 @@ private:
     std::string m_workWhy;
     int m_team = 1;
     bool m_probing = false;
+    bool m_warmup = false;  ///< the trial's first step is still to come (not measured)
     int m_probeTeam = 1;
     int m_windowSteps = 0;
     double m_windowSeconds = 0;

@@ -46,7 +46,7 @@ TEST(ParallelSlots, TheRangesAreTheCutsAndCoverEveryItemOnce) {
 }
 
 TEST(ParallelSlots, CutsThatDoNotFitTheItemsOrTheTeamFallBackToEqualBlocks) {
-    const std::vector<std::uint32_t> stale{0, 700, 1000};  // cut for 1000 items, the store has 6000
+    const std::vector<std::uint32_t> stale{0, 700, 1000};       // cut for 1000 items, the store has 6000
     const std::vector<std::uint32_t> otherTeam{0, 3000, 6000};  // two parts for a team of three
     for (const auto* cuts : {&stale, &otherTeam}) {
         const Visits v = visit(3, cuts, 6000);
