@@ -71,7 +71,8 @@ bool ThreadGovernor::stepDone(double seconds) noexcept {
         startWindow();
         return false;
     }
-    const bool full = m_windowSeconds >= kWindow && m_windowSteps >= kWindowSteps;
+    const bool full = (m_windowSeconds >= kWindow && m_windowSteps >= kWindowSteps) ||
+                      (m_windowSeconds >= kLongWindow && m_windowSteps >= kLongWindowSteps);
     if (m_probing) {
         // Lost already: slower by kLose than the team's pace over the same steps, with a slack of
         // two of its steps.

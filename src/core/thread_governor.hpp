@@ -42,6 +42,10 @@ public:
     /// [s] shortest trial window and fewest steps in it; [s] of steps between the first tries.
     static constexpr double kWindow = 0.02;
     static constexpr int kWindowSteps = 16;
+    /// [s] a window of long steps (large scenes: 5-10 ms each) is full after kLongWindow and
+    /// kLongWindowSteps steps, so that the run does not spend 16 of them on the slower team.
+    static constexpr double kLongWindow = 0.05;
+    static constexpr int kLongWindowSteps = 4;
     static constexpr double kFirstBackoff = 0.25, kMaxBackoff = 30.0;
     /// A trial wins when its time per step is below kWin times the current team's; it has lost
     /// as soon as its time passes kLose times the current team's for the same steps (plus slack).

@@ -21,6 +21,7 @@
 #include "dem/forces_area_pairs.hpp"
 #include "dem/forces_depth.hpp"
 #include "dem/forces_detail.hpp"
+#include "geom/rotation.hpp"
 
 namespace granulab::dem {
 
@@ -48,7 +49,7 @@ void springForces(model::ParticleStore& s, const BodyForces& body, std::uint32_t
         const std::uint32_t i = sp.slot;  // kRemovedSlot: another rank's particle (dem/parallel/)
         if (i < begin || i >= end) continue;
         GL_ASSERT(i < s.size(), "spring slot in range");
-        const Real c = std::cos(s.angle[i]), sn = std::sin(s.angle[i]);
+        const auto [c, sn] = geom::rotationOf(s.angle[i]);
         const Vec2 arm{c * sp.attach.x - sn * sp.attach.y, sn * sp.attach.x + c * sp.attach.y};
         const Vec2 f = (sp.freeEnd(body.time) - (Vec2{s.x[i], s.y[i]} + arm)) * sp.stiffness;
         s.fx[i] += f.x;

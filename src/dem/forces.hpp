@@ -13,6 +13,7 @@
 #include "dem/law_table.hpp"
 #include "dem/neighbor_list.hpp"
 #include "geom/convex_contact.hpp"
+#include "geom/rotation.hpp"
 #include "model/particle_store.hpp"
 #include "model/shape_pool.hpp"
 #include "model/walls.hpp"
@@ -55,6 +56,7 @@ struct ShapeContext {
     std::vector<Vec2> world;           ///< [m] world corners of all polygons, slot order
     std::vector<std::uint32_t> first;  ///< first world corner of each slot (polygons only)
     geom::FeatureStats featureStats;   ///< closest-feature work since the last reset
+    geom::RotationCache rotations;     ///< cos, sin of each slot's angle (geom/rotation.hpp)
     bool anyPolygon = false;
     Real scale = 1;  ///< global size scaling s(t) of the body corners (gc2d 2.4, Eq. 2.30/2.31)
     /// Recomputes the world corners from positions, angles and the scale s (gc2d Eq. 2.35, angle

@@ -16,6 +16,7 @@
 #include "dem/machine_setup.hpp"
 #include "geom/overlap_tests.hpp"
 #include "geom/polygon.hpp"
+#include "geom/rotation.hpp"
 #include "geom/segment.hpp"
 #include "model/material_names.hpp"
 #include "model/particle_store.hpp"
@@ -28,7 +29,7 @@ namespace {
 /// World corners [m] of particle p: position + R(angle) * body corners (counter-clockwise).
 std::vector<Vec2> worldCorners(const InitialParticles& init, const InitialParticle& p) {
     std::vector<Vec2> w = init.shapes.shapeCorners(p.shape);
-    const Real c = std::cos(p.angle), s = std::sin(p.angle);
+    const auto [c, s] = geom::rotationOf(p.angle);  // as the force kernel's corners
     for (Vec2& v : w) v = p.position + Vec2{c * v.x - s * v.y, s * v.x + c * v.y};
     return w;
 }

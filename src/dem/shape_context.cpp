@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: MIT
 // World corners of the polygon particles, once per force evaluation (gc2d spec section 5.4, steps
 // 2-3; Eq. 2.35 with s = 1 and the angle counter-clockwise, i.e. phi = -angle).
-#include <cmath>
-
 #include "core/error.hpp"
 #include "core/parallel.hpp"
 #include "dem/forces.hpp"
@@ -22,11 +20,13 @@ void ShapeContext::update(const model::ParticleStore& s, int threads,
         if (s.shape[i] != model::kDiskShape) total += pool->count[s.shape[i]];
     }
     world.resize(total);
+    rotations.resize(n);
     parallelSlots(threads, cuts, n, [&](std::size_t begin, std::size_t end, std::size_t) {
         for (std::size_t i = begin; i < end; ++i) {
             const std::uint32_t k = s.shape[i];
             if (k == model::kDiskShape) continue;
-            const Real c = std::cos(s.angle[i]) * scale, sn = std::sin(s.angle[i]) * scale;  // s R(phi)
+            const geom::CosSin r = rotations(i, s.angle[i]);
+            const Real c = r.c * scale, sn = r.s * scale;  // s R(phi)
             const Vec2 x{s.x[i], s.y[i]};
             const Vec2* body = pool->corners.data() + pool->start[k];
             Vec2* out = world.data() + first[i];

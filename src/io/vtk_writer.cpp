@@ -15,6 +15,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "geom/rotation.hpp"
 #include "io/atomic_file.hpp"
 
 namespace granulab::io {
@@ -178,7 +179,7 @@ void writeParticles(const std::string& path, const model::ParticleStore& s, cons
             }
             continue;
         }
-        const double cs = std::cos(s.angle[i]), sn = std::sin(s.angle[i]);
+        const auto [cs, sn] = geom::rotationOf(s.angle[i]);  // as the force kernel's corners
         const std::uint32_t count = shapes->count[k];
         for (std::uint32_t c = 0; c < count; ++c) {
             const Vec2 body = shapes->corners[shapes->start[k] + c];

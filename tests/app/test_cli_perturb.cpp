@@ -21,9 +21,14 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// The pile is settled by global viscous damping from 2.3 s to 2.9 s (damping time m/gamma ~ 0.1 s
+// for a 0.05 kg/m grain), then rests free for 0.1 s: without it, how long the last grains rock
+// depends on the realization (the area law dissipates little per corner impact), and a round-off
+// change of the corners moved the rest from 2.9 s to 3.9 s.
 const std::string kPile =
     "source[0].to=2.0 run.end_time=3.0 dem.dt=5e-6 'wall[0].points=[[-0.4,0.0],[-0.0075,0.0]]' "
-    "'wall[1].points=[[-0.0075,0.0],[0.0075,0.0]]' 'wall[2].points=[[0.0075,0.0],[0.4,0.0]]'";
+    "'wall[1].points=[[-0.0075,0.0],[0.0075,0.0]]' 'wall[2].points=[[0.0075,0.0],[0.4,0.0]]' "
+    "'dem.damping=[{gamma=0.5,gamma_rotation=1e-6,from=2.3,to=2.9}]'";
 constexpr double kG = 9.81;  // [m/s^2]
 
 std::string scene() {
@@ -94,13 +99,23 @@ double median(std::vector<double> v) {
     return v.empty() ? NAN : v[v.size() / 2];
 }
 
+/// Mean of value(series, row) over the rows of the last `span` [s] of the series (at least 8 rows).
+template <class Value>
+double meanOver(const Series& s, double span, Value value) {
+    const std::size_t end = s.rows.size() - 1;
+    double sum = 0;
+    int rows = 0;
+    for (std::size_t k = s.rowAt(s.rows[end][0] - span); k <= end; ++k, ++rows) sum += value(s, k);
+    EXPECT_GE(rows, 8) << "too few rows in the last " << span << " s";
+    return sum / rows;
+}
+
 }  // namespace
 
 TEST(Cli, PerturbedPileTapsWithdrawsAndUnloads) {
     test::ScratchDir dir;
-    // The saved pile: 201 drops in 2 s, 1 s to rest (kinetic energy ~1e-6 J of 0.86 J potential).
-    // How long the last grains take depends on the realization: in one, a late grain rocked on the
-    // floor beside the pile until ~2.9 s (the area law dissipates little per corner impact).
+    // The saved pile: 201 drops in 2 s, 1 s to rest, damped from 2.3 s to 2.9 s (kPile; kinetic
+    // energy ~5e-8 J of 0.83 J potential at 3.0 s).
     auto r = test::runGranulab(
         "run '" + scene() + "' -q --out pile --set " + kPile + " output.snapshot_interval=0.2", dir.path,
         600);
@@ -121,13 +136,7 @@ TEST(Cli, PerturbedPileTapsWithdrawsAndUnloads) {
         return -(s.at(row, "wall_floor_left_fy") + s.at(row, "wall_stamp_fy") +
                  s.at(row, "wall_floor_right_fy"));
     };
-    double meanLoad = 0;
-    int rows = 0;
-    for (std::size_t k = pile.rowAt(pile.rows[end][0] - 0.4); k <= end; ++k, ++rows)
-        meanLoad += floorLoad(pile, k);
-    meanLoad /= rows;
-    ASSERT_GE(rows, 8);
-    EXPECT_NEAR(meanLoad, weight, 0.02 * weight);
+    EXPECT_NEAR(meanOver(pile, 0.4, floorLoad), weight, 0.02 * weight);
     const double p0 = -pile.at(end, "wall_stamp_fy");  // [N] the stamp's load at rest
     ASSERT_GT(p0, 0.05 * weight) << "the stamp under the apex carries a part of the pile";
 
@@ -148,21 +157,33 @@ TEST(Cli, PerturbedPileTapsWithdrawsAndUnloads) {
     const double h1 = tap.at(tapEnd, "potential_energy") / weight;
     EXPECT_LT(h1, 0.98 * h0) << "h_cm " << h0 << " -> " << h1 << " m";
     EXPECT_LT(tap.at(tapEnd, "kinetic_energy"), 1e-3 * tap.at(tapEnd, "potential_energy")) << "not at rest";
-    EXPECT_NEAR(floorLoad(tap, tapEnd), weight, 0.01 * weight);
+    // The tapped pile still rocks (single rows +-2.5 % of the weight 0.1 s after the last tap):
+    // the floor carries it on average over the last 0.1 s, as for the pile above.
+    EXPECT_NEAR(meanOver(tap, 0.1, floorLoad), weight, 0.02 * weight);
 
-    // 4.3.2 The stamp withdrawn at 1 mm/s to 0.3 mm (0.08 grain diameters). The thesis: p = dP/P0
+    // 4.3.2 The stamp withdrawn at 1 mm/s to 1 mm (0.29 grain diameters). The thesis: p = dP/P0
     // reaches -0.7 at a displacement below one grain diameter, and the load goes into the floor
-    // beside the stamp through an arch (measured here: -0.7 at 0.15 mm, -0.84 at the end).
-    resume(dir.path, "down", "3.3", "'wall[1].velocity=[0.0,-1.0e-3]'");
+    // beside the stamp through an arch (measured on two realizations: -0.7 at 0.15 mm and at
+    // 0.35 mm, -0.83 at 1 mm).
+    resume(dir.path, "down", "4.0", "'wall[1].velocity=[0.0,-1.0e-3]'");
     const Series down = readSeries(dir.path / "down/series.csv");
     const std::size_t downEnd = down.rows.size() - 1;
-    EXPECT_NEAR(down.at(downEnd, "wall_stamp_dy"), -3e-4, 1e-6);
+    EXPECT_NEAR(down.at(downEnd, "wall_stamp_dy"), -1e-3, 1e-6);
     double uAt07 = NAN;  // [m] displacement where p first reaches -0.7
     for (std::size_t k = down.rowAt(3.0) + 1; k < down.rows.size() && std::isnan(uAt07); ++k)
         if (-down.at(k, "wall_stamp_fy") <= 0.3 * p0) uAt07 = down.at(k, "wall_stamp_dy");
-    ASSERT_FALSE(std::isnan(uAt07)) << "p = -0.7 not reached by u = -0.3 mm";
-    // Force balance at the end: the load the stamp shed is on the floor pieces.
-    EXPECT_NEAR(floorLoad(down, downEnd), weight, 0.01 * weight);
+    ASSERT_FALSE(std::isnan(uAt07)) << "p = -0.7 not reached by u = -1 mm";
+    // The load the stamp shed is on the floor pieces beside it, to 2 % of the weight as for the
+    // pile above (means over the pile's last 0.4 s and the withdrawal's last 0.1 s: grains still
+    // rock or follow the stamp; single rows of the resting pile lie 1-2 % below the weight).
+    const auto sideLoad = [](const Series& s, std::size_t row) {
+        return -(s.at(row, "wall_floor_left_fy") + s.at(row, "wall_floor_right_fy"));
+    };
+    const auto stampLoad = [](const Series& s, std::size_t row) { return -s.at(row, "wall_stamp_fy"); };
+    const double shed = meanOver(pile, 0.4, stampLoad) - meanOver(down, 0.1, stampLoad);
+    const double taken = meanOver(down, 0.1, sideLoad) - meanOver(pile, 0.4, sideLoad);
+    EXPECT_GT(shed, 0.5 * p0);
+    EXPECT_NEAR(taken, shed, 0.02 * weight);
     EXPECT_LT(-down.at(downEnd, "wall_stamp_fy"), 0.3 * p0);
 
     // 4.3.3 Elastic constants: g lowered linearly to 2.45e-3 m/s^2 over 0.3 s, 0.1 s at rest;

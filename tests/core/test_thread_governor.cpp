@@ -99,6 +99,19 @@ TEST(ThreadGovernor, TheFirstStepOfATrialStartsItsThreadsAndIsNotJudged) {
     EXPECT_NE(g.reason().find("2 threads: 1.50x the speed of 1 thread"), std::string::npos) << g.reason();
 }
 
+TEST(ThreadGovernor, LongStepsAreJudgedOnFewOfThem) {
+    // A large scene: 10 ms per step on one thread, 5 ms on two. The run of 200 steps (1 s) must
+    // not spend 16 steps on one thread before it tries two, nor 16 in each later check.
+    ThreadGovernor g;
+    g.setAutomatic(2);
+    g.setWorkLimit(2, "");
+    const auto on = drive(g, 200, [](int team) { return team == 1 ? 10e-3 : 5e-3; });
+    EXPECT_EQ(g.team(), 2) << g.reason();
+    // 5 steps of the first window (0.05 s), then checks of one thread that lose within 4 steps.
+    EXPECT_LE(on[1], 14) << "steps on the slower team";
+    EXPECT_GE(on[1], ThreadGovernor::kLongWindowSteps);
+}
+
 TEST(ThreadGovernor, LeavesASlowTrialWithinTwoStepsAndTriesLessOftenAfterEachLoss) {
     // Busy cores: two threads take 60 times as long per step (a barrier waits for a time slice).
     ThreadGovernor g;

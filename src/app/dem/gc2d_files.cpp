@@ -10,6 +10,7 @@
 
 #include "app/dem/dem_contacts.hpp"
 #include "app/render_picture.hpp"
+#include "geom/rotation.hpp"
 #include "io/atomic_file.hpp"
 
 namespace granulab::app {
@@ -93,7 +94,7 @@ analysis::GrainFrame grainFrameOf(const dem::World& world) {
         g.material.push_back(static_cast<std::int32_t>(s.material[i]));
         const std::uint32_t k = s.shape[i];
         if (k != model::kDiskShape) {  // world corners, gc2d Eq. 2.35 with counter-clockwise angles
-            const Real c = std::cos(s.angle[i]), sn = std::sin(s.angle[i]);
+            const auto [c, sn] = geom::rotationOf(s.angle[i]);  // as the force kernel's
             for (std::uint32_t q = 0; q < pool.count[k]; ++q) {
                 const Vec2 b = pool.corners[pool.start[k] + q] * scale;
                 g.corners.push_back({s.x[i] + c * b.x - sn * b.y, s.y[i] + sn * b.x + c * b.y});
@@ -233,7 +234,7 @@ bool Gc2dFiles::dump(const std::string& dir, int index) {
         const auto it = slotOf.find(sp.id);
         if (it == slotOf.end()) continue;
         const std::size_t i = it->second;
-        const Real c = std::cos(s.angle[i]), sn = std::sin(s.angle[i]);
+        const auto [c, sn] = geom::rotationOf(s.angle[i]);
         const Vec2 at = Vec2{s.x[i], s.y[i]} +
                         Vec2{c * sp.attach.x - sn * sp.attach.y, sn * sp.attach.x + c * sp.attach.y};
         oneBody.push_back(
