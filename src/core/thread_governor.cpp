@@ -62,6 +62,10 @@ bool ThreadGovernor::stepDone(double seconds) noexcept {
     m_clock += seconds;
     ++m_windowSteps;
     m_windowSeconds += seconds;
+    if (m_probing) {
+        ++m_trialSteps;
+        m_trialSeconds += seconds;
+    }
     if (m_probing && m_warmup) {
         // The trial team's first step is not measured: it starts or wakes the threads, and their
         // caches, the force split and the per-thread slots are new (on the idle 2-core VM it took
@@ -97,6 +101,8 @@ bool ThreadGovernor::stepDone(double seconds) noexcept {
         if (next == 0 || m_clock < (up ? m_nextUp : m_nextDown)) continue;
         m_probing = true;
         m_warmup = true;
+        m_trialSteps = 0;
+        m_trialSeconds = 0;
         m_probeTeam = next;
         ++m_trials;
         return true;
@@ -122,7 +128,9 @@ void ThreadGovernor::endTrial(bool won, double ratio) noexcept {
         (up ? m_backoffDown : m_backoffUp) = kFirstBackoff;
     } else {
         backoff = std::min(kMaxBackoff, 2 * backoff);
-        next = m_clock + backoff;
+        // The next try waits until this one's loss is at most kTrialBudget of the run time.
+        const double lost = std::max(0.0, m_trialSeconds - m_cost * m_trialSteps);
+        next = m_clock + std::max(backoff, lost / kTrialBudget);
     }
     m_probing = false;
     startWindow();

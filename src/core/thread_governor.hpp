@@ -50,6 +50,10 @@ public:
     /// A trial wins when its time per step is below kWin times the current team's; it has lost
     /// as soon as its time passes kLose times the current team's for the same steps (plus slack).
     static constexpr double kWin = 0.93, kLose = 1.25;
+    /// A lost trial's extra wall time (over the current team's pace for its steps) is at most this
+    /// fraction of the run time before the next one: on busy cores one trial step can take a
+    /// whole time slice of the operating system (10-20 ms against 0.03 ms on one thread).
+    static constexpr double kTrialBudget = 0.02;
 
 private:
     void startWindow() noexcept {
@@ -72,9 +76,11 @@ private:
     int m_probeTeam = 1;
     int m_windowSteps = 0;
     double m_windowSeconds = 0;
-    double m_cost = -1;   ///< [s] per step of m_team (smoothed); < 0: not measured yet
-    double m_clock = 0;   ///< [s] sum of the reported step times
-    double m_nextUp = 0;  ///< m_clock at which the next larger team may be tried
+    int m_trialSteps = 0;       ///< steps of the running trial, its first step included
+    double m_trialSeconds = 0;  ///< [s] their wall time
+    double m_cost = -1;         ///< [s] per step of m_team (smoothed); < 0: not measured yet
+    double m_clock = 0;         ///< [s] sum of the reported step times
+    double m_nextUp = 0;        ///< m_clock at which the next larger team may be tried
     double m_nextDown = 0;
     double m_backoffUp = kFirstBackoff, m_backoffDown = kFirstBackoff;
     // The last comparison, for reason(): team `m_comparedTeam` ran at m_comparedRatio times the

@@ -54,7 +54,7 @@ inline CosSin ofStep(std::int64_t k) noexcept {
 /// Whole steps of h nearest to angle (|angle| < kLargestSplit), and the exact rest.
 inline std::int64_t stepOf(Real angle, Real& delta) noexcept {
     const Real k = std::nearbyint(angle * kStepsPerRadian);  // angle * 64 is exact
-    delta = angle - k / kStepsPerRadian;                      // exact: both lie within 1/128
+    delta = angle - k / kStepsPerRadian;                     // exact: both lie within 1/128
     return static_cast<std::int64_t>(k);
 }
 

@@ -99,6 +99,25 @@ TEST(ThreadGovernor, TheFirstStepOfATrialStartsItsThreadsAndIsNotJudged) {
     EXPECT_NE(g.reason().find("2 threads: 1.50x the speed of 1 thread"), std::string::npos) << g.reason();
 }
 
+TEST(ThreadGovernor, AShortRunOnBusyCoresPaysForOneTrialAtMost) {
+    // 512 polygons on busy cores (the 2-core VM with a busy loop per core): 26 us per step on one
+    // thread, 12 ms on two (each barrier waits for a time slice). A 0.4 s run must not lose more
+    // than a few per cent to trials: after the first one lost ~24 ms, the next waits >= 1.2 s.
+    ThreadGovernor g;
+    g.setAutomatic(2);
+    g.setWorkLimit(2, "");
+    double wall = 0, wallOnOne = 0;
+    for (int k = 0; k < 16000; ++k) {
+        const double t = g.team() == 1 ? 26e-6 : 12e-3;
+        wall += t;
+        wallOnOne += 26e-6;
+        g.stepDone(t);
+    }
+    EXPECT_EQ(g.team(), 1);
+    EXPECT_EQ(g.trials(), 1u);
+    EXPECT_LT(wall, 1.07 * wallOnOne) << "the trials cost more than 7 % of a 0.4 s run";
+}
+
 TEST(ThreadGovernor, LongStepsAreJudgedOnFewOfThem) {
     // A large scene: 10 ms per step on one thread, 5 ms on two. The run of 200 steps (1 s) must
     // not spend 16 steps on one thread before it tries two, nor 16 in each later check.
