@@ -57,7 +57,30 @@ int ThreadGovernor::neighbour(int team, bool up) const noexcept {
     return team <= 1 ? 0 : team / 2;
 }
 
-bool ThreadGovernor::stepDone(double seconds) noexcept {
+bool ThreadGovernor::coresLookFree(int next) {
+    if (!m_probe.start || !m_probe.read) return true;
+    if (m_sampleFrom < 0) {
+        m_probe.start();
+        m_sampleFrom = m_clock;
+        return false;
+    }
+    if (m_clock - m_sampleFrom < kIdleInterval) return false;
+    const double idle = m_probe.read();
+    m_sampleFrom = -1;
+    if (idle < 0 || idle >= kFreeShare * (next - m_team)) {
+        m_busyIdle = -1;
+        return true;
+    }
+    // Busy: other programs hold the cores that the larger team would need.
+    m_busyIdle = idle;
+    m_busyTeam = next;
+    ++m_busySkips;
+    m_backoffUp = std::min(kMaxBackoff, 2 * m_backoffUp);
+    m_nextUp = m_clock + m_backoffUp;
+    return false;
+}
+
+bool ThreadGovernor::stepDone(double seconds) {
     if (!m_automatic || limit() <= 1) return false;
     m_clock += seconds;
     ++m_windowSteps;
@@ -99,6 +122,8 @@ bool ThreadGovernor::stepDone(double seconds) noexcept {
     for (const bool up : {true, false}) {
         const int next = neighbour(m_team, up);
         if (next == 0 || m_clock < (up ? m_nextUp : m_nextDown)) continue;
+        if (up && !coresLookFree(next)) continue;
+        m_sampleFrom = -1;
         m_probing = true;
         m_warmup = true;
         m_trialSteps = 0;
@@ -141,6 +166,10 @@ std::string ThreadGovernor::reason() const {
     if (!m_automatic) return threadsWord(now) + ": asked for (--threads / run.threads)";
     if (m_cores <= 1) return "1 thread: this process may use 1 core";
     if (m_byWork <= 1) return "1 thread: " + m_workWhy;
+    if (m_busyIdle >= 0)
+        return fmt::format(
+            "{}: the other cores are busy ({:.2f} of a core idle; {} are tried when {:.1f} are idle)",
+            threadsWord(now), m_busyIdle, threadsWord(m_busyTeam), kFreeShare * (m_busyTeam - m_team));
     if (m_comparedTeam == 0)
         return fmt::format("{}: trying up to {} (the fastest is measured during the run)", threadsWord(now),
                            limit());

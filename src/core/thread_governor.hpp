@@ -8,10 +8,13 @@
 // measured), and measures again from time to time (less often after each
 // try that lost), so that it follows a machine whose cores become busy (other runs, a build) or
 // idle again. A trial that is clearly slower stops after a step or two: on busy cores a barrier may
-// wait for a whole time slice of the operating system. Where each thread would get less work than
-// a barrier costs, it stays on one thread without trying. An explicit count is used as it is.
+// wait for a whole time slice of the operating system. Before it tries a larger team it asks how
+// many cores were idle (core/idle_cores.hpp) and waits while the cores are busy with other work.
+// Where each thread would get less work than a barrier costs, it stays on one thread without
+// trying. An explicit count is used as it is.
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <string>
 
 namespace granulab {
@@ -25,8 +28,16 @@ public:
     /// The most threads the work can use (>= 1) and why, e.g. "512 polygons is below the threaded
     /// size (2 x 256)"; shown as the reason when it is what keeps the run on fewer threads.
     void setWorkLimit(int byWork, std::string why);
+    /// The machine's idle cores, asked before a larger team is tried: start() begins an interval,
+    /// read() returns the cores idle on average over it (< 0: unknown). Without a probe (or while
+    /// it answers unknown) every due trial runs and its measurement alone decides.
+    struct IdleProbe {
+        std::function<void()> start;
+        std::function<double()> read;
+    };
+    void setIdleProbe(IdleProbe probe) { m_probe = std::move(probe); }
     /// Reports the wall time [s] of the step just done; true when team() changes for the next step.
-    bool stepDone(double seconds) noexcept;
+    bool stepDone(double seconds);
 
     /// Threads for the next step.
     int team() const noexcept { return m_probing ? m_probeTeam : m_team; }
@@ -38,6 +49,8 @@ public:
     /// Trial windows run, and how often the team changed.
     std::uint64_t trials() const noexcept { return m_trials; }
     std::uint64_t changes() const noexcept { return m_changes; }
+    /// Due trials of a larger team put off because the cores were busy.
+    std::uint64_t busySkips() const noexcept { return m_busySkips; }
 
     /// [s] shortest trial window and fewest steps in it; [s] of steps between the first tries.
     static constexpr double kWindow = 0.02;
@@ -54,6 +67,11 @@ public:
     /// fraction of the run time before the next one: on busy cores one trial step can take a
     /// whole time slice of the operating system (10-20 ms against 0.03 ms on one thread).
     static constexpr double kTrialBudget = 0.02;
+    /// [s] the idle cores are measured over this much run time before a larger team is tried
+    /// (/proc/stat counts in ticks of 10 ms); the trial runs if at least kFreeShare of a core is
+    /// idle for each added thread.
+    static constexpr double kIdleInterval = 0.1;
+    static constexpr double kFreeShare = 0.5;
 
 private:
     void startWindow() noexcept {
@@ -64,6 +82,9 @@ private:
     void endTrial(bool won, double ratio) noexcept;
     /// The next larger (up) or smaller team to try from `team`, or 0 if none.
     int neighbour(int team, bool up) const noexcept;
+    /// False while the idle cores are measured, or when they are too few for a trial of `next`
+    /// threads (the trial is then put off as a lost one would be).
+    bool coresLookFree(int next);
 
     bool m_automatic = false;
     int m_explicit = 1;
@@ -87,7 +108,11 @@ private:
     // speed of `m_comparedWith` (> 1: faster).
     int m_comparedTeam = 0, m_comparedWith = 0;
     double m_comparedRatio = 0;
-    std::uint64_t m_trials = 0, m_changes = 0;
+    std::uint64_t m_trials = 0, m_changes = 0, m_busySkips = 0;
+    IdleProbe m_probe;
+    double m_sampleFrom = -1;  ///< m_clock at the probe's start(); < 0: no interval running
+    double m_busyIdle = -1;    ///< idle cores at the last check that put a trial off; < 0: none since
+    int m_busyTeam = 0;        ///< the team that check wanted to try
 };
 
 }  // namespace granulab

@@ -13,6 +13,7 @@
 #include <unordered_map>
 
 #include "core/binary_io.hpp"
+#include "core/idle_cores.hpp"
 #include "core/parallel.hpp"
 
 namespace granulab::dem {
@@ -56,6 +57,10 @@ World::World(WorldConfig config, model::ParticleStore store, model::WallSet wall
         m_governor.setAutomatic(m_config.threads);
     else
         m_governor.setExplicit(m_config.threads);
+    {  // the automatic count asks how many cores are idle before it tries a larger team
+        auto idle = std::make_shared<IdleCores>();
+        m_governor.setIdleProbe({[idle] { idle->start(); }, [idle] { return idle->idleSinceStart(); }});
+    }
     m_minRadius = m_store.size() ? *std::min_element(m_store.radius.begin(), m_store.radius.end()) : 1e300;
     m_shapes.anyPolygon = m_pool.size() > 0;
     for (const ParticleId id : m_store.id) m_nextId = std::max<ParticleId>(m_nextId, id + 1);

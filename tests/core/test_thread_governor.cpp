@@ -7,8 +7,12 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <string>
+#include <thread>
+#include <vector>
 
+#include "core/idle_cores.hpp"
 #include "core/thread_governor.hpp"
 
 using granulab::ThreadGovernor;
@@ -188,4 +192,103 @@ TEST(ThreadGovernor, FewerParticlesShrinkTheTeam) {
     g.setWorkLimit(1, "100 particles is below the threaded size (1024 per thread)");
     EXPECT_EQ(g.team(), 1);
     EXPECT_EQ(g.limit(), 1);
+}
+
+namespace {
+/// A made-up idle-core meter: `idle` cores idle over any interval; counts its readings.
+struct FakeIdle {
+    double idle = 0;
+    int starts = 0, reads = 0;
+    ThreadGovernor::IdleProbe probe() {
+        return {[this] { ++starts; },
+                [this] {
+                    ++reads;
+                    return idle;
+                }};
+    }
+};
+}  // namespace
+
+TEST(ThreadGovernor, BusyCoresPutTheTrialOffWithoutRunningIt) {
+    // Other programs keep both cores busy (0.05 of a core idle): no trial of 2 threads runs, the
+    // run stays on one thread, and the reason says why.
+    ThreadGovernor g;
+    FakeIdle meter;
+    meter.idle = 0.05;
+    g.setIdleProbe(meter.probe());
+    g.setAutomatic(2);
+    g.setWorkLimit(2, "");
+    const auto on = drive(g, 40000, [](int team) { return team == 1 ? 1e-4 : 1e-2; });  // 4 s
+    EXPECT_EQ(on[2], 0);
+    EXPECT_EQ(g.trials(), 0u);
+    EXPECT_GT(g.busySkips(), 0u);
+    EXPECT_LE(meter.reads, 10) << "the meter is read rarely (its backoff doubles)";
+    EXPECT_NE(g.reason().find("1 thread: the other cores are busy (0.05 of a core idle"), std::string::npos)
+        << g.reason();
+}
+
+TEST(ThreadGovernor, IdleCoresLetTheTrialRunAndItsMeasurementDecides) {
+    ThreadGovernor g;
+    FakeIdle meter;
+    meter.idle = 1.0;
+    g.setIdleProbe(meter.probe());
+    g.setAutomatic(2);
+    g.setWorkLimit(2, "");
+    const auto on = drive(g, 20000, [](int team) { return team == 1 ? 1e-4 : 0.6e-4; });
+    EXPECT_EQ(g.team(), 2) << g.reason();
+    EXPECT_GT(on[2], 18000);  // the idle cores are measured over 0.1 s of run time first
+    EXPECT_EQ(g.busySkips(), 0u);
+    EXPECT_NE(g.reason().find("2 threads: "), std::string::npos) << g.reason();
+}
+
+TEST(ThreadGovernor, CoresThatBecomeFreeAreTakenWhenMeasuredFreeAgain) {
+    ThreadGovernor g;
+    FakeIdle meter;
+    meter.idle = 0.0;
+    g.setIdleProbe(meter.probe());
+    g.setAutomatic(2);
+    g.setWorkLimit(2, "");
+    const auto cost = [](int team) { return team == 1 ? 1e-3 : 0.55e-3; };
+    drive(g, 5000, cost);  // 5 s busy
+    EXPECT_EQ(g.team(), 1);
+    meter.idle = 0.9;       // the other job ended
+    drive(g, 70000, cost);  // within the longest backoff (30 s) and a trial
+    EXPECT_EQ(g.team(), 2) << g.reason();
+}
+
+TEST(ThreadGovernor, AnUnknownIdleCountLeavesTheDecisionToTheTrial) {
+    ThreadGovernor g;
+    FakeIdle meter;
+    meter.idle = -1;  // no /proc/stat
+    g.setIdleProbe(meter.probe());
+    g.setAutomatic(2);
+    g.setWorkLimit(2, "");
+    drive(g, 20000, [](int team) { return team == 1 ? 1e-4 : 0.6e-4; });
+    EXPECT_EQ(g.team(), 2) << g.reason();
+    EXPECT_EQ(g.busySkips(), 0u);
+}
+
+TEST(IdleCores, SumsTheIdleShareOfEachCpu) {
+    using T = granulab::IdleCores::Ticks;
+    const std::vector<T> before{{100, 1000}, {50, 1000}};
+    // CPU 0: 90 of 100 ticks idle; CPU 1: none of 100.
+    const std::vector<T> after{{190, 1100}, {50, 1100}};
+    EXPECT_DOUBLE_EQ(granulab::IdleCores::idleBetween(before, after), 0.9);
+    EXPECT_LT(granulab::IdleCores::idleBetween(before, before), 0) << "no tick passed: unknown";
+    EXPECT_LT(granulab::IdleCores::idleBetween(before, {{190, 1100}}), 0) << "another CPU set";
+    EXPECT_LT(granulab::IdleCores::idleBetween(after, before), 0) << "counters went back (CPU offline)";
+}
+
+TEST(IdleCores, ReadsThisMachine) {
+    // On Linux the meter knows an answer over a quarter of a second, between 0 and the cores.
+    granulab::IdleCores meter;
+    meter.start();
+    const auto until = std::chrono::steady_clock::now() + std::chrono::milliseconds(250);
+    while (std::chrono::steady_clock::now() < until) {
+    }
+    const double idle = meter.idleSinceStart();
+#ifdef __linux__
+    EXPECT_GE(idle, 0);
+#endif
+    EXPECT_LE(idle, static_cast<double>(std::thread::hardware_concurrency()) + 1e-9);
 }

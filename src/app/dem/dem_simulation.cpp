@@ -391,7 +391,8 @@ public:
                                     {"limit", g.limit()},
                                     {"reason", g.reason()},
                                     {"trials", g.trials()},
-                                    {"changes", g.changes()}};
+                                    {"changes", g.changes()},
+                                    {"busy_skips", g.busySkips()}};
         }
         js["ranks"] = worldCommunicator().size();
         if (m_domain) js["domains"] = domainKeys();
