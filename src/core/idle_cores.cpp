@@ -31,8 +31,8 @@ std::vector<IdleCores::Ticks> IdleCores::read() const {
         if (std::strncmp(line, "cpu", 3) != 0) break;  // the cpu lines come first
         int cpu = -1;
         unsigned long long v[8] = {};
-        if (std::sscanf(line, "cpu%d %llu %llu %llu %llu %llu %llu %llu %llu", &cpu, &v[0], &v[1], &v[2], &v[3],
-                        &v[4], &v[5], &v[6], &v[7]) < 5 ||
+        if (std::sscanf(line, "cpu%d %llu %llu %llu %llu %llu %llu %llu %llu", &cpu, &v[0], &v[1], &v[2],
+                        &v[3], &v[4], &v[5], &v[6], &v[7]) < 5 ||
             cpu < 0)
             continue;  // the first line sums all CPUs ("cpu  ...")
         if (static_cast<std::size_t>(cpu) >= all.size()) all.resize(static_cast<std::size_t>(cpu) + 1);
@@ -63,11 +63,13 @@ double IdleCores::idleBetween(const std::vector<Ticks>& before, const std::vecto
     double idle = 0;
     bool enough = false;
     for (std::size_t k = 0; k < before.size(); ++k) {
-        if (after[k].total < before[k].total || after[k].idle < before[k].idle) return -1;  // a CPU went offline
+        if (after[k].total < before[k].total || after[k].idle < before[k].idle)
+            return -1;  // a CPU went offline
         const std::uint64_t total = after[k].total - before[k].total;
         if (total == 0) continue;
         enough = enough || total >= minTicks;
-        idle += static_cast<double>(std::min(after[k].idle - before[k].idle, total)) / static_cast<double>(total);
+        idle +=
+            static_cast<double>(std::min(after[k].idle - before[k].idle, total)) / static_cast<double>(total);
     }
     return enough ? idle : -1;
 }

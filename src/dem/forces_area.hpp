@@ -34,8 +34,12 @@ inline geom::PolygonFrame frameOf(const model::ParticleStore& s, const ShapeCont
 }
 
 /// Geometry of the pair (i, j), normal pushing i away from j, written to `out` (in place: the
-/// pair kernel's batch slot, so that the result is not copied through the stack).
-inline void pairGeometryInto(const model::ParticleStore& s, const ShapeContext& sc, std::uint32_t i,
+/// pair kernel's batch slot, so that the result is not copied through the stack). kDeferNormal:
+/// a persistent polygon contact refreshed inline leaves out.normal unset and returns true; the
+/// caller completes it with geom::crossings::chainNormal(out, x_i, x_j) (the same arithmetic,
+/// in its batched law pass). Returns false when out is complete.
+template <bool kDeferNormal = false>
+inline bool pairGeometryInto(const model::ParticleStore& s, const ShapeContext& sc, std::uint32_t i,
                              std::uint32_t j, geom::FeatureCache& cache, geom::FeatureStats& features,
                              geom::AreaContact& out) noexcept {
     const bool pi = s.shape[i] != model::kDiskShape, pj = s.shape[j] != model::kDiskShape;
@@ -43,18 +47,24 @@ inline void pairGeometryInto(const model::ParticleStore& s, const ShapeContext& 
     if (pi && pj) {
         const geom::PolygonFrame fi = frameOf(s, sc, i), fj = frameOf(s, sc, j);
         // A persistent contact (both cached crossings hold) is refreshed inline.
-        if (!geom::crossings::refreshCrossings(fi, fj, cache, features, out))
-            out = geom::trackPolygonContact(fi, fj, cache, features);
-        return;
+        if (geom::crossings::refreshCrossings<!kDeferNormal>(fi, fj, cache, features, out))
+            return kDeferNormal;
+        // A persistent near miss whose cached features still prove it apart.
+        if (geom::crossings::stillApart(fi, fj, cache, features)) {
+            out = geom::AreaContact{};
+            return false;
+        }
+        out = geom::trackPolygonContact(fi, fj, cache, features);
+        return false;
     }
     if (!pi && !pj) {
         out = geom::circleCircleContact(ci, s.radius[i], cj, s.radius[j]);
-        return;
+        return false;
     }
     if (!pi) {
         const auto f = frameOf(s, sc, j);
         out = geom::circlePolygonContact(ci, s.radius[i], f.corners, f.n);
-        return;
+        return false;
     }
     const auto f = frameOf(s, sc, i);
     geom::AreaContact& g = out;
@@ -63,6 +73,7 @@ inline void pairGeometryInto(const model::ParticleStore& s, const ShapeContext& 
     std::swap(g.c1, g.c2);
     g.pull = -g.pull;  // the closed overlap boundary: sum of n L and its moment vanish
     g.twist = -g.twist;
+    return false;
 }
 
 /// Geometry of the pair (i, j), normal pushing i away from j.

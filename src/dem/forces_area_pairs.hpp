@@ -51,6 +51,7 @@ void areaPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
     // forces are still summed in pair order (bit-identical to a single pass).
     struct Pending {
         std::uint32_t p, i, j;
+        bool normalPending;  ///< g.normal still to be computed (geom::crossings::chainNormal)
         geom::AreaContact g;
     };
     constexpr int kBatch = 32;
@@ -62,8 +63,10 @@ void areaPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
             const std::uint32_t i = q.i, j = q.j;
             area::AreaPair c;
             c.g = q.g;
-            c.ri = c.g.point - Vec2{s.x[i], s.y[i]};
-            c.rj = c.g.point - Vec2{s.x[j], s.y[j]};
+            const Vec2 xi{s.x[i], s.y[i]}, xj{s.x[j], s.y[j]};
+            if (q.normalPending) geom::crossings::chainNormal(c.g, xi, xj);
+            c.ri = c.g.point - xi;
+            c.rj = c.g.point - xj;
             c.vi = pointVelocity(s.vx.data(), s.vy.data(), s.omega.data(), i, c.ri);
             c.vj = pointVelocity(s.vx.data(), s.vy.data(), s.omega.data(), j, c.rj);
             if (drift.vx) {
@@ -113,7 +116,7 @@ void areaPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
             continue;
         }
         Pending& q = batch[pending];
-        area::pairGeometryInto(s, sc, i, j, list.features[p], features, q.g);
+        q.normalPending = area::pairGeometryInto<true>(s, sc, i, j, list.features[p], features, q.g);
         if (!q.g.touching) {
             xiHist[p] = 0;
             areaHist[p] = 0;

@@ -61,8 +61,25 @@ inline bool entryAt(const PolygonFrame& X, const PolygonFrame& Y, int x, int y, 
     return entryOf(X.corner(x), X.corner(x + 1), Y.corner(y), Y.corner(y + 1), e);
 }
 
+/// The unit normal of a contact with crossings c1, c2: perp(c2 - c1) / |c2 - c1| pushes A away
+/// from B (B's chain, A's side, lies left of c1 -> c2); along the centres where c1 = c2.
+inline void chainNormal(AreaContact& c, Vec2 centreA, Vec2 centreB) noexcept {
+    const Vec2 line = c.c2 - c.c1;
+    const Real len = norm(line);
+    if (len > 0) {
+        c.normal = perp(line) / len;
+    } else {
+        const Vec2 d = centreA - centreB;
+        const Real dn = norm(d);
+        c.normal = dn > 0 ? d / dn : Vec2{1, 0};
+    }
+}
+
 /// Overlap polygon from the two crossings: A-entry (a1, b1, e1) and B-entry (b2 into A at a2, e2).
 /// The shoelace sum runs relative to c1 over A's corners a1+1 .. a2, c2, B's corners b2+1 .. b1.
+/// kNormal = false leaves c.normal to chainNormal (the pair kernel's batched law pass computes it,
+/// where the square root and divisions of independent pairs overlap).
+template <bool kNormal = true>
 inline AreaContact chainContact(const PolygonFrame& A, const PolygonFrame& B, int a1, int b1, const Entry& e1,
                                 int a2, int b2, const Entry& e2) noexcept {
     int kA = wrap(a2 - a1, A.n);
@@ -94,16 +111,8 @@ inline AreaContact chainContact(const PolygonFrame& A, const PolygonFrame& B, in
     c.c2 = e2.point;
     c.point = (c.c1 + c.c2) * 0.5;
     c.touching = c.area > 0;
-    // B's chain (A's side) lies left of c1 -> c2: n = perp(c2 - c1) pushes A away from B.
+    if constexpr (kNormal) chainNormal(c, A.centre, B.centre);
     const Vec2 line = c.c2 - c.c1;
-    const Real len = norm(line);
-    if (len > 0) {
-        c.normal = perp(line) / len;
-    } else {
-        const Vec2 d = A.centre - B.centre;
-        const Real dn = norm(d);
-        c.normal = dn > 0 ? d / dn : Vec2{1, 0};
-    }
     // A's chain c1 -> c2 carries -dA/dx_A = sum of perp(edge) = perp(c2 - c1); its moment about
     // the midpoint s telescopes to (|c2 - s|^2 - |c1 - s|^2)/2 = 0.
     c.pull = perp(line);
@@ -121,6 +130,8 @@ inline bool deepOverlap(const AreaContact& c, const PolygonFrame& A, const Polyg
 /// same arithmetic; the cache keeps its indices; one evaluation and two feature tests are
 /// counted). Returns false, with `cache` and `stats` untouched, in every other case; the caller
 /// then calls trackPolygonContact. Inlined into the pair kernel: no call, no index search.
+/// kNormal = false: out.normal is left to chainNormal (see chainContact).
+template <bool kNormal = true>
 inline bool refreshCrossings(const PolygonFrame& A, const PolygonFrame& B, const FeatureCache& cache,
                              FeatureStats& stats, AreaContact& out) noexcept {
     if (cache.state != FeatureCache::Crossing) return false;
@@ -128,10 +139,47 @@ inline bool refreshCrossings(const PolygonFrame& A, const PolygonFrame& B, const
     if (a1 >= A.n || b1 >= B.n || a2 >= A.n || b2 >= B.n) return false;
     Entry e1, e2;
     if (!entryAt(A, B, a1, b1, e1) || !entryAt(B, A, b2, a2, e2)) return false;
-    out = chainContact(A, B, a1, b1, e1, a2, b2, e2);
+    out = chainContact<kNormal>(A, B, a1, b1, e1, a2, b2, e2);
     if (deepOverlap(out, A, B)) return false;
     ++stats.evaluations;
     stats.iterations += 2;  // one entry test at each cached crossing, as findEntryNear counts them
+    return true;
+}
+
+/// True if the cached closest features of an apart pair still prove it apart by a separating
+/// line, without the Lin-Canny walk (no division, no square root): for an edge of one polygon and
+/// a corner of the other, the corner lies strictly outside the edge's line and is the other
+/// polygon's extreme point toward it (both neighbours no nearer the line: convexity makes a local
+/// extreme the global one); for two corners, the line between them is separating (each corner is
+/// its polygon's extreme point along it). The cache keeps its features (they remain a start near
+/// the closest ones; the walk moves them when the certificate fails). Counts one evaluation and
+/// one feature test. False, with `stats` untouched, in every other case (the caller then calls
+/// trackPolygonContact, which walks).
+inline bool stillApart(const PolygonFrame& A, const PolygonFrame& B, const FeatureCache& cache,
+                       FeatureStats& stats) noexcept {
+    if (cache.state != FeatureCache::Apart) return false;
+    const int fa = cache.f[0], fb = cache.f[1];
+    if (fa >= 2 * A.n || fb >= 2 * B.n) return false;
+    const int ka = fa >> 1, kb = fb >> 1;
+    bool apart;
+    if (fa & 1) {
+        if (fb & 1) return false;  // two edges: not stored (the walk reduces them to an edge and a corner)
+        // Edge ka of A (inside on its left), corner kb of B.
+        const Vec2 e0 = A.corners[ka], e1 = A.corner(ka + 1), q = B.corners[kb];
+        const Real s = side(q, e0, e1);
+        apart = s < 0 && side(B.corner(kb - 1), e0, e1) <= s && side(B.corner(kb + 1), e0, e1) <= s;
+    } else if (fb & 1) {
+        const Vec2 e0 = B.corners[kb], e1 = B.corner(kb + 1), q = A.corners[ka];
+        const Real s = side(q, e0, e1);
+        apart = s < 0 && side(A.corner(ka - 1), e0, e1) <= s && side(A.corner(ka + 1), e0, e1) <= s;
+    } else {
+        const Vec2 p = A.corners[ka], q = B.corners[kb], d = q - p;
+        apart = norm2(d) > 0 && dot(A.corner(ka - 1) - p, d) <= 0 && dot(A.corner(ka + 1) - p, d) <= 0 &&
+                dot(B.corner(kb - 1) - q, d) >= 0 && dot(B.corner(kb + 1) - q, d) >= 0;
+    }
+    if (!apart) return false;
+    ++stats.evaluations;
+    ++stats.iterations;
     return true;
 }
 
