@@ -5,6 +5,7 @@
 #include <sched.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <cstring>
 
@@ -19,29 +20,37 @@ IdleCores::IdleCores() {
 }
 
 std::vector<IdleCores::Ticks> IdleCores::read() const {
-    std::vector<Ticks> out;
-    if (m_cpus.empty()) return out;
+    if (m_cpus.empty()) return {};
     std::FILE* f = std::fopen("/proc/stat", "r");
-    if (!f) return out;
+    if (!f) return {};
+    std::vector<Ticks> out = parseStat(f, m_cpus);
+    std::fclose(f);
+    return out;
+}
+
+std::vector<IdleCores::Ticks> IdleCores::parseStat(std::FILE* f, const std::vector<int>& cpus) {
+    std::vector<Ticks> out;
     std::vector<Ticks> all;  // index: CPU number
     char line[512];
     while (std::fgets(line, sizeof line, f)) {
         // "cpuN user nice system idle iowait irq softirq steal guest guest_nice" (guest time is
         // already counted in user and nice)
         if (std::strncmp(line, "cpu", 3) != 0) break;  // the cpu lines come first
+        // The first line sums all CPUs ("cpu  user nice ..."): no CPU number follows "cpu" (and
+        // "%d" would skip the blanks and take the user ticks for one).
+        if (!std::isdigit(static_cast<unsigned char>(line[3]))) continue;
         int cpu = -1;
         unsigned long long v[8] = {};
         if (std::sscanf(line, "cpu%d %llu %llu %llu %llu %llu %llu %llu %llu", &cpu, &v[0], &v[1], &v[2],
                         &v[3], &v[4], &v[5], &v[6], &v[7]) < 5 ||
-            cpu < 0)
-            continue;  // the first line sums all CPUs ("cpu  ...")
+            cpu < 0 || cpu >= kMaxCpu)
+            continue;
         if (static_cast<std::size_t>(cpu) >= all.size()) all.resize(static_cast<std::size_t>(cpu) + 1);
         Ticks& t = all[static_cast<std::size_t>(cpu)];
         t.idle = v[3] + v[4];
         for (const unsigned long long x : v) t.total += x;
     }
-    std::fclose(f);
-    for (const int c : m_cpus) {
+    for (const int c : cpus) {
         if (static_cast<std::size_t>(c) >= all.size()) return {};  // a CPU of the mask not listed
         out.push_back(all[static_cast<std::size_t>(c)]);
     }

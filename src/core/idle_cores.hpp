@@ -7,6 +7,7 @@
 // Read rarely (once per planned trial, a few times a second at most), never in a step's loops.
 #pragma once
 #include <cstdint>
+#include <cstdio>
 #include <vector>
 
 namespace granulab {
@@ -26,9 +27,14 @@ public:
         std::uint64_t idle = 0, total = 0;
     };
     /// Idle cores between two readings of the same CPUs; < 0 when fewer than `minTicks` ticks
-    /// passed on every CPU (an interval too short to tell).
+    /// passed on every CPU (an interval too short to tell). Two ticks (20 ms) resolve what the
+    /// thread count asks: whether the other cores were busy throughout or idle.
     static double idleBetween(const std::vector<Ticks>& before, const std::vector<Ticks>& after,
-                              std::uint64_t minTicks = 5);
+                              std::uint64_t minTicks = 2);
+
+    /// The ticks of `cpus` from the text of /proc/stat (empty when one of them is not listed).
+    static std::vector<Ticks> parseStat(std::FILE* stat, const std::vector<int>& cpus);
+    static constexpr int kMaxCpu = 1 << 16;
 
 private:
     /// Ticks of the mask's CPUs now (empty when /proc/stat cannot be read).

@@ -26,6 +26,8 @@ void ThreadGovernor::setAutomatic(int cores) noexcept {
     m_cores = std::max(1, cores);
     m_team = 1;  // the safe start: one thread never waits for a core that another job holds
     m_probing = false;
+    m_sampling = false;
+    m_busyIdle = -1;
     m_cost = -1;
     startWindow();
 }
@@ -57,16 +59,16 @@ int ThreadGovernor::neighbour(int team, bool up) const noexcept {
     return team <= 1 ? 0 : team / 2;
 }
 
+void ThreadGovernor::restartSample() {
+    if (!m_probe.start || !m_probe.read) return;
+    m_probe.start();
+    m_sampling = true;
+}
+
 bool ThreadGovernor::coresLookFree(int next) {
     if (!m_probe.start || !m_probe.read) return true;
-    if (m_sampleFrom < 0) {
-        m_probe.start();
-        m_sampleFrom = m_clock;
-        return false;
-    }
-    if (m_clock - m_sampleFrom < kIdleInterval) return false;
-    const double idle = m_probe.read();
-    m_sampleFrom = -1;
+    const double idle = m_sampling ? m_probe.read() : -1;
+    restartSample();
     if (idle < 0 || idle >= kFreeShare * (next - m_team)) {
         m_busyIdle = -1;
         return true;
@@ -82,6 +84,7 @@ bool ThreadGovernor::coresLookFree(int next) {
 
 bool ThreadGovernor::stepDone(double seconds) {
     if (!m_automatic || limit() <= 1) return false;
+    if (!m_sampling && !m_probing) restartSample();  // the idle cores from the first step on
     m_clock += seconds;
     ++m_windowSteps;
     m_windowSeconds += seconds;
@@ -123,7 +126,7 @@ bool ThreadGovernor::stepDone(double seconds) {
         const int next = neighbour(m_team, up);
         if (next == 0 || m_clock < (up ? m_nextUp : m_nextDown)) continue;
         if (up && !coresLookFree(next)) continue;
-        m_sampleFrom = -1;
+        m_sampling = false;  // measured again from the trial's end
         m_probing = true;
         m_warmup = true;
         m_trialSteps = 0;

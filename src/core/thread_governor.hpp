@@ -67,10 +67,10 @@ public:
     /// fraction of the run time before the next one: on busy cores one trial step can take a
     /// whole time slice of the operating system (10-20 ms against 0.03 ms on one thread).
     static constexpr double kTrialBudget = 0.02;
-    /// [s] the idle cores are measured over this much run time before a larger team is tried
-    /// (/proc/stat counts in ticks of 10 ms); the trial runs if at least kFreeShare of a core is
-    /// idle for each added thread.
-    static constexpr double kIdleInterval = 0.1;
+    /// A due trial of a larger team runs if, since the run's start or the last trial or check,
+    /// at least kFreeShare of a core was idle for each thread it would add (or the probe cannot
+    /// tell: /proc/stat counts in ticks of 10 ms, so the first check, after the first window of
+    /// 20 ms, sees two ticks per core).
     static constexpr double kFreeShare = 0.5;
 
 private:
@@ -82,9 +82,11 @@ private:
     void endTrial(bool won, double ratio) noexcept;
     /// The next larger (up) or smaller team to try from `team`, or 0 if none.
     int neighbour(int team, bool up) const noexcept;
-    /// False while the idle cores are measured, or when they are too few for a trial of `next`
-    /// threads (the trial is then put off as a lost one would be).
+    /// False when the idle cores since the last check are too few for a trial of `next` threads
+    /// (the trial is then put off as a lost one would be); starts the next interval.
     bool coresLookFree(int next);
+    /// Starts the probe's interval (the cores' idle time on the current team) now.
+    void restartSample();
 
     bool m_automatic = false;
     int m_explicit = 1;
@@ -110,9 +112,9 @@ private:
     double m_comparedRatio = 0;
     std::uint64_t m_trials = 0, m_changes = 0, m_busySkips = 0;
     IdleProbe m_probe;
-    double m_sampleFrom = -1;  ///< m_clock at the probe's start(); < 0: no interval running
-    double m_busyIdle = -1;    ///< idle cores at the last check that put a trial off; < 0: none since
-    int m_busyTeam = 0;        ///< the team that check wanted to try
+    bool m_sampling = false;  ///< the probe's interval is running
+    double m_busyIdle = -1;   ///< idle cores at the last check that put a trial off; < 0: none since
+    int m_busyTeam = 0;       ///< the team that check wanted to try
 };
 
 }  // namespace granulab

@@ -230,7 +230,7 @@ public:
     void setThreads(int threads);
     /// How the thread count was chosen (reason(), trials).
     const ThreadGovernor& threadGovernor() const noexcept { return m_governor; }
-    static constexpr std::size_t kParticlesPerThread = 1024;
+    static constexpr std::size_t kParticlesPerThread = 512;
     static constexpr std::size_t kPolygonsPerThread = 256;
     /// Replaces both work limits of the automatic count (tests use it).
     void setParticlesPerThread(std::size_t particles) {

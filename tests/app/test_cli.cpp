@@ -185,7 +185,8 @@ TEST(Cli, AnyThreadCountGivesTheSameFinalStateAndTheDefaultSaysWhy) {
     const test::ScratchDir scratch;
     const auto& dir = scratch.path;
     const std::string scene = std::string(GRANULAB_SOURCE_DIR) + "/examples/disks_in_box.toml";
-    const std::string common = " --quiet --set run.end_time=0.02";
+    // 400 disks: below the threaded size (World::kParticlesPerThread), so the default runs one thread.
+    const std::string common = " --quiet --set run.end_time=0.02 --set block[0].count=400";
     for (const std::string t : {"1", "2", "3", "0"}) {
         const auto r =
             test::runGranulab("run '" + scene + "'" + common + " --threads " + t + " --out t" + t, dir);

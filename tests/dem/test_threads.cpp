@@ -260,8 +260,9 @@ TEST(DemThreads, ContactForcesCancelInPairsWhileGrainsEnter) {
 }
 
 TEST(DemThreads, ASmallSceneRunsOnOneThreadByDefault) {
-    // run.threads = 0: the automatic count; ~1,500 disks are too few to share (World::team).
-    dem::World w = test::makeWorldFromToml(kDiskBed);
+    // run.threads = 0: the automatic count; ~400 disks are too few to share (World::team).
+    dem::World w =
+        test::makeWorldFromToml(kDiskBed, {io::parseOverride("block[0].region=[0.1, 0.1, 20.0, 20.0]")});
     ASSERT_TRUE(w.threadGovernor().automatic());
     ASSERT_LT(w.store().size(), 2 * dem::World::kParticlesPerThread);
     for (int k = 0; k < 300; ++k) ASSERT_EQ(w.step(), dem::kStepOk);
