@@ -117,10 +117,11 @@ for load in $LOADS; do
             steps=$((budget / n)); ((steps < 200)) && steps=200
             sets=$(overrides "$shape" "$n" "$steps")
             ones=() alls=() defs=() dthr="" why=""
+            limit=600  # set from the first 1-thread run of the cell (the first repeat starts with it)
             for ((r = 0; r < REPEATS; ++r)); do
                 # The three runs in a rotating order (one-all-default, all-default-one, default-one-all):
                 # on a loaded machine no cell always runs right after the slowest one.
-                limit=600 s1="" sa="" sd=""
+                s1="" sa="" sd=""
                 for ((k = 0; k < 3; ++k)); do
                     case $(((r + k) % 3)) in
                         0) t0=$(date +%s.%N)

@@ -208,6 +208,14 @@ struct FakeIdle {
                 }};
     }
 };
+
+/// The automatic count on 2 cores, work for 2 threads, asking `meter` (which answers `idle`).
+void automaticOnTwoCores(ThreadGovernor& g, FakeIdle& meter, double idle) {
+    meter.idle = idle;
+    g.setIdleProbe(meter.probe());
+    g.setAutomatic(2);
+    g.setWorkLimit(2, "");
+}
 }  // namespace
 
 TEST(ThreadGovernor, BusyCoresPutTheTrialOffWithoutRunningIt) {
@@ -215,10 +223,7 @@ TEST(ThreadGovernor, BusyCoresPutTheTrialOffWithoutRunningIt) {
     // run stays on one thread, and the reason says why.
     ThreadGovernor g;
     FakeIdle meter;
-    meter.idle = 0.05;
-    g.setIdleProbe(meter.probe());
-    g.setAutomatic(2);
-    g.setWorkLimit(2, "");
+    automaticOnTwoCores(g, meter, 0.05);
     const auto on = drive(g, 40000, [](int team) { return team == 1 ? 1e-4 : 1e-2; });  // 4 s
     EXPECT_EQ(on[2], 0);
     EXPECT_EQ(g.trials(), 0u);
@@ -231,10 +236,7 @@ TEST(ThreadGovernor, BusyCoresPutTheTrialOffWithoutRunningIt) {
 TEST(ThreadGovernor, IdleCoresLetTheTrialRunAndItsMeasurementDecides) {
     ThreadGovernor g;
     FakeIdle meter;
-    meter.idle = 1.0;
-    g.setIdleProbe(meter.probe());
-    g.setAutomatic(2);
-    g.setWorkLimit(2, "");
+    automaticOnTwoCores(g, meter, 1.0);
     const auto on = drive(g, 20000, [](int team) { return team == 1 ? 1e-4 : 0.6e-4; });
     EXPECT_EQ(g.team(), 2) << g.reason();
     EXPECT_GT(on[2], 18000);  // the first check, after the first window, lets the trial run
@@ -245,10 +247,7 @@ TEST(ThreadGovernor, IdleCoresLetTheTrialRunAndItsMeasurementDecides) {
 TEST(ThreadGovernor, CoresThatBecomeFreeAreTakenWhenMeasuredFreeAgain) {
     ThreadGovernor g;
     FakeIdle meter;
-    meter.idle = 0.0;
-    g.setIdleProbe(meter.probe());
-    g.setAutomatic(2);
-    g.setWorkLimit(2, "");
+    automaticOnTwoCores(g, meter, 0.0);
     const auto cost = [](int team) { return team == 1 ? 1e-3 : 0.55e-3; };
     drive(g, 5000, cost);  // 5 s busy
     EXPECT_EQ(g.team(), 1);
@@ -260,10 +259,7 @@ TEST(ThreadGovernor, CoresThatBecomeFreeAreTakenWhenMeasuredFreeAgain) {
 TEST(ThreadGovernor, AnUnknownIdleCountLeavesTheDecisionToTheTrial) {
     ThreadGovernor g;
     FakeIdle meter;
-    meter.idle = -1;  // no /proc/stat
-    g.setIdleProbe(meter.probe());
-    g.setAutomatic(2);
-    g.setWorkLimit(2, "");
+    automaticOnTwoCores(g, meter, -1);  // no /proc/stat
     drive(g, 20000, [](int team) { return team == 1 ? 1e-4 : 0.6e-4; });
     EXPECT_EQ(g.team(), 2) << g.reason();
     EXPECT_EQ(g.busySkips(), 0u);

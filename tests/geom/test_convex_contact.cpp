@@ -82,6 +82,29 @@ void expectMatchesClipping(const PolygonFrame& A, const PolygonFrame& B, const A
     EXPECT_LT(std::min(d1, d2), 1e-9 * scale);
     EXPECT_NEAR(dot(c.normal, ref.normal), 1.0, 1e-9);
 }
+
+/// A random pair: A starts at x = -3 and moves right past B (at the origin) while it turns, so it
+/// approaches, presses in slightly and leaves again. Up to 3 + maxExtra corners each.
+struct Approach {
+    std::vector<Vec2> pa, pb;
+    Vec2 c;          ///< A's centre
+    Real ang, angB;  ///< angles of A and B
+    Vec2 v;          ///< A's displacement per step
+    Real w;          ///< A's turn per step
+};
+Approach randomApproach(CounterRng& rng, int maxExtra) {
+    const int na = 3 + static_cast<int>(rng.uniform() * maxExtra),
+              nb = 3 + static_cast<int>(rng.uniform() * maxExtra);
+    Approach a;
+    a.pa = randomConvex(rng, na, 1.0, rng.uniform(0.3, 1.0));
+    a.pb = randomConvex(rng, nb, rng.uniform(0.5, 1.5), rng.uniform(0.3, 1.0));
+    a.c = {-3.0, rng.uniform(-0.8, 0.8)};
+    a.ang = rng.uniform(0, 2 * kPi);
+    a.angB = rng.uniform(0, 2 * kPi);
+    a.v = {0.01, rng.uniform(-0.002, 0.002)};
+    a.w = rng.uniform(-0.02, 0.02);
+    return a;
+}
 }  // namespace
 
 TEST(ConvexContact, TwoSquaresExact) {
@@ -102,20 +125,12 @@ TEST(ConvexContact, TrackedEqualsClippingAlongRandomTrajectories) {
     FeatureStats stats;
     std::uint64_t touchingSteps = 0;
     for (int trial = 0; trial < 60; ++trial) {
-        const int na = 3 + static_cast<int>(rng.uniform() * 20),
-                  nb = 3 + static_cast<int>(rng.uniform() * 20);
-        const auto pa = randomConvex(rng, na, 1.0, rng.uniform(0.3, 1.0));
-        const auto pb = randomConvex(rng, nb, rng.uniform(0.5, 1.5), rng.uniform(0.3, 1.0));
-        // A approaches B, rotates, presses in slightly and leaves again.
-        Vec2 c{-3.0, rng.uniform(-0.8, 0.8)};
-        Real ang = rng.uniform(0, 2 * kPi), angB = rng.uniform(0, 2 * kPi);
-        const Vec2 v{0.01, rng.uniform(-0.002, 0.002)};
-        const Real w = rng.uniform(-0.02, 0.02);
+        Approach a = randomApproach(rng, 20);
         FeatureCache cache;
         for (int step = 0; step < 600; ++step) {
-            c += v;
-            ang += w;
-            const auto A = frame(pa, c, ang), B = frame(pb, {0, 0}, angB);
+            a.c += a.v;
+            a.ang += a.w;
+            const auto A = frame(a.pa, a.c, a.ang), B = frame(a.pb, {0, 0}, a.angB);
             const auto got = trackPolygonContact(A, B, cache, stats);
             // Beyond a quarter of the inscribed radius the tracker itself clips (deep overlaps).
             expectMatchesClipping(A, B, got, 1.0);
@@ -143,20 +158,14 @@ TEST(ConvexContact, ThePairKernelsInlinePathsEqualTheTrackedContact) {
     FeatureStats stats, spare;
     std::uint64_t refreshed = 0, certified = 0, tracked = 0;
     for (int trial = 0; trial < 60; ++trial) {
-        const int na = 3 + static_cast<int>(rng.uniform() * 12),
-                  nb = 3 + static_cast<int>(rng.uniform() * 12);
-        const auto pa = randomConvex(rng, na, 1.0, rng.uniform(0.3, 1.0));
-        const auto pb = randomConvex(rng, nb, rng.uniform(0.5, 1.5), rng.uniform(0.3, 1.0));
-        Vec2 c{-3.0, rng.uniform(-0.8, 0.8)};
-        Real ang = rng.uniform(0, 2 * kPi), angB = rng.uniform(0, 2 * kPi);
-        const Vec2 v{0.01, rng.uniform(-0.002, 0.002)};
-        const Real w = rng.uniform(-0.02, 0.02), wB = rng.uniform(-0.01, 0.01);
+        Approach a = randomApproach(rng, 12);
+        const Real wB = rng.uniform(-0.01, 0.01);  // B turns too
         FeatureCache cache;
         for (int step = 0; step < 600; ++step) {
-            c += v;
-            ang += w;
-            angB += wB;
-            const auto A = frame(pa, c, ang), B = frame(pb, {0, 0}, angB);
+            a.c += a.v;
+            a.ang += a.w;
+            a.angB += wB;
+            const auto A = frame(a.pa, a.c, a.ang), B = frame(a.pb, {0, 0}, a.angB);
             FeatureCache copy = cache;
             const AreaContact reference = trackPolygonContact(A, B, copy, spare);
             AreaContact got;
