@@ -34,10 +34,19 @@ namespace {
 void bodyForces(model::ParticleStore& s, const BodyForces& body, std::uint32_t begin,
                 std::uint32_t end) noexcept {
     const Vec2 weightG = body.weight ? body.gravity : Vec2{};
+    const Real gamma = body.gamma, gammaRotation = body.gammaRotation;
+    const Real* __restrict mass = s.mass.data();
+    const Real* __restrict vx = s.vx.data();
+    const Real* __restrict vy = s.vy.data();
+    const Real* __restrict omega = s.omega.data();
+    Real* __restrict fx = s.fx.data();
+    Real* __restrict fy = s.fy.data();
+    Real* __restrict tq = s.torque.data();
+#pragma omp simd
     for (std::uint32_t i = begin; i < end; ++i) {
-        s.fx[i] = s.mass[i] * weightG.x - body.gamma * s.vx[i];
-        s.fy[i] = s.mass[i] * weightG.y - body.gamma * s.vy[i];
-        s.torque[i] = -body.gammaRotation * s.omega[i];
+        fx[i] = mass[i] * weightG.x - gamma * vx[i];
+        fy[i] = mass[i] * weightG.y - gamma * vy[i];
+        tq[i] = -gammaRotation * omega[i];
     }
 }
 

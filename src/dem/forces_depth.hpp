@@ -131,8 +131,12 @@ void diskPairs(model::ParticleStore& s, ContactList& list, std::uint32_t begin, 
         }
         if constexpr (kLog)
             log->addDiskPair(s.id[i], s.id[j], {x[i], y[i]}, ri, {x[j], y[j]}, rj, {nx, ny}, {fxi, fyi});
-        const Real rel = overlap / (ri < rj ? ri : rj);
-        maxRel = rel > maxRel ? rel : maxRel;
+        // Largest overlap / min(r_i, r_j): the division only for a new largest (rarely taken).
+        const Real rmin = ri < rj ? ri : rj;
+        if (overlap > maxRel * rmin) [[unlikely]] {
+            const Real rel = overlap / rmin;
+            maxRel = rel > maxRel ? rel : maxRel;
+        }
     }
     stats.contacts += contacts;
     stats.maxRelativeOverlap = maxRel;

@@ -88,22 +88,26 @@ Real VelocityVerlet::predict(model::ParticleStore& s, Real dt) noexcept {
         const Real* __restrict tq = s.torque.data();
         const Real* __restrict im = s.invMass.data();
         const Real* __restrict ii = s.invInertia.data();
+        const Real step = dt, half = h;  // locals: a captured reference is re-read after every store
         Real maxV2 = 0;
-        bool nonFinite = false;
+        int nonFinite = 0;
+        // A max reduction vectorizes only when the compiler may reorder it (exact for a maximum;
+        // NaN is flagged separately): without the pragma the loop ran scalar, 13 % of the disk bed.
+#pragma omp simd reduction(max : maxV2) reduction(| : nonFinite)
         for (std::size_t i = begin; i < end; ++i) {
-            const Real kx = h * fx[i] * im[i], ky = h * fy[i] * im[i], kw = h * tq[i] * ii[i];
+            const Real kx = half * fx[i] * im[i], ky = half * fy[i] * im[i], kw = half * tq[i] * ii[i];
             hvx[i] = vx[i] + kx;
             hvy[i] = vy[i] + ky;
             hw[i] = w[i] + kw;
-            x[i] += dt * hvx[i];
-            y[i] += dt * hvy[i];
-            a[i] += dt * hw[i];
+            x[i] += step * hvx[i];
+            y[i] += step * hvy[i];
+            a[i] += step * hw[i];
             vx[i] = hvx[i] + kx;  // predicted v(t + dt) for velocity-dependent forces
             vy[i] = hvy[i] + ky;
             w[i] = hw[i] + kw;
             const Real v2 = hvx[i] * hvx[i] + hvy[i] * hvy[i];
             maxV2 = v2 > maxV2 ? v2 : maxV2;
-            nonFinite |= !(v2 == v2);  // NaN is seen by the caller
+            nonFinite |= !(v2 == v2) ? 1 : 0;  // NaN is seen by the caller
         }
         return nonFinite ? std::numeric_limits<Real>::quiet_NaN() : maxV2;
     }));
@@ -129,6 +133,7 @@ void VelocityVerlet::correctSlots(model::ParticleStore& s, Real dt, std::size_t 
     const Real* __restrict tq = s.torque.data();
     const Real* __restrict im = s.invMass.data();
     const Real* __restrict ii = s.invInertia.data();
+#pragma omp simd
     for (std::size_t i = begin; i < end; ++i) {
         vx[i] = hvx[i] + h * fx[i] * im[i];
         vy[i] = hvy[i] + h * fy[i] * im[i];
