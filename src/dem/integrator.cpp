@@ -49,11 +49,12 @@ Real maxSquaredSpeed(const model::ParticleStore& s, std::size_t begin, std::size
     const Real* __restrict vx = s.vx.data();
     const Real* __restrict vy = s.vy.data();
     Real maxV2 = 0;
-    bool nonFinite = false;
+    int nonFinite = 0;
+#pragma omp simd reduction(max : maxV2) reduction(| : nonFinite)  // see VelocityVerlet::predict
     for (std::size_t i = begin; i < end; ++i) {
         const Real v2 = vx[i] * vx[i] + vy[i] * vy[i];
         maxV2 = v2 > maxV2 ? v2 : maxV2;
-        nonFinite |= !(v2 == v2);
+        nonFinite |= !(v2 == v2) ? 1 : 0;
     }
     return nonFinite ? std::numeric_limits<Real>::quiet_NaN() : maxV2;
 }
