@@ -24,16 +24,16 @@ bool NeighborList::needsRebuild(const model::ParticleStore& s, Real skin, Real w
         const Real* __restrict px = x0.data();
         const Real* __restrict py = y0.data();
         Real m = 0;
-        int nonFinite = 0;
+        Real nanSeen = 0;  // a double flag: an int flag kept the loop scalar (GCC 12)
         // The pragma lets the max reduction vectorize (exact in any order; NaN is tracked apart).
-#pragma omp simd reduction(max : m) reduction(| : nonFinite)
+#pragma omp simd reduction(max : m) reduction(max : nanSeen)
         for (std::size_t i = begin; i < end; ++i) {
             const Real dx = x[i] - px[i], dy = y[i] - py[i];
             const Real d2 = dx * dx + dy * dy;
             m = d2 > m ? d2 : m;
-            nonFinite |= !(d2 == d2) ? 1 : 0;
+            nanSeen = d2 == d2 ? nanSeen : 1.0;
         }
-        return nonFinite ? std::numeric_limits<Real>::quiet_NaN() : m;
+        return nanSeen > 0 ? std::numeric_limits<Real>::quiet_NaN() : m;
     });
     return !(max2 <= limit2);  // NaN-safe: a non-finite position forces a rebuild
 }
