@@ -26,7 +26,8 @@ using namespace granulab;
 
 std::vector<std::uint32_t> evenCuts(std::uint32_t n, int parts) {
     std::vector<std::uint32_t> cuts(static_cast<std::size_t>(parts) + 1);
-    for (int k = 0; k <= parts; ++k) cuts[static_cast<std::size_t>(k)] = n * static_cast<std::uint32_t>(k) / parts;
+    for (int k = 0; k <= parts; ++k)
+        cuts[static_cast<std::size_t>(k)] = n * static_cast<std::uint32_t>(k) / parts;
     return cuts;
 }
 
