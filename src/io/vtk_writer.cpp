@@ -95,6 +95,8 @@ struct ParticleArrays {
     std::vector<std::int64_t> id;
     std::vector<double> radius, velocity, speed, omega, angle, mass;
     std::vector<std::int32_t> material;
+    std::vector<double> acceleration, angularAcceleration, diameter;
+    std::vector<double> fluidVelocity, fluidPressure;  ///< only with a FluidAtParticles
 
     void reserve(std::size_t n) {
         id.reserve(n);
@@ -105,10 +107,14 @@ struct ParticleArrays {
         angle.reserve(n);
         mass.reserve(n);
         material.reserve(n);
+        acceleration.reserve(3 * n);
+        angularAcceleration.reserve(n);
+        diameter.reserve(n);
     }
 
-    /// Appends particle i of `s`, with `radius` given (0 at polygon corners).
-    void add(const model::ParticleStore& s, std::size_t i, double r) {
+    /// Appends particle i of `s`, with `radius` given (0 at polygon corners), and the flow at it
+    /// when `fluid` is given.
+    void add(const model::ParticleStore& s, std::size_t i, double r, const FluidAtParticles* fluid) {
         id.push_back(static_cast<std::int64_t>(s.id[i]));
         radius.push_back(r);
         velocity.insert(velocity.end(), {s.vx[i], s.vy[i], 0.0});
@@ -117,9 +123,37 @@ struct ParticleArrays {
         angle.push_back(s.angle[i]);
         mass.push_back(s.mass[i]);
         material.push_back(static_cast<std::int32_t>(s.material[i]));
+        // The force and torque of the last evaluation, so a = F / m of the state written.
+        acceleration.insert(acceleration.end(), {s.fx[i] * s.invMass[i], s.fy[i] * s.invMass[i], 0.0});
+        angularAcceleration.push_back(s.torque[i] * s.invInertia[i]);
+        diameter.push_back(2 * r);
+        if (fluid) {
+            fluidVelocity.insert(fluidVelocity.end(),
+                                 {fluid->velocity[2 * i], fluid->velocity[2 * i + 1], 0.0});
+            fluidPressure.push_back(fluid->pressure[i]);
+        }
     }
 
-    /// The eight arrays, in the order of the disk-only format.
+    /// Appends every entry of `other` (the polygon cells after the disk cells).
+    void append(const ParticleArrays& other) {
+        const auto tail = [](auto& a, const auto& b) { a.insert(a.end(), b.begin(), b.end()); };
+        tail(id, other.id);
+        tail(radius, other.radius);
+        tail(velocity, other.velocity);
+        tail(speed, other.speed);
+        tail(omega, other.omega);
+        tail(angle, other.angle);
+        tail(mass, other.mass);
+        tail(material, other.material);
+        tail(acceleration, other.acceleration);
+        tail(angularAcceleration, other.angularAcceleration);
+        tail(diameter, other.diameter);
+        tail(fluidVelocity, other.fluidVelocity);
+        tail(fluidPressure, other.fluidPressure);
+    }
+
+    /// The eight arrays of the disk-only format, then the accelerations and the diameter, then the
+    /// flow at the particles when there is one.
     void write(VtpBuilder& b, const std::string& in) const {
         b.array(in, "Int64", "id", 1, id);
         b.array(in, "Float64", "radius", 1, radius);
@@ -129,13 +163,25 @@ struct ParticleArrays {
         b.array(in, "Float64", "angle", 1, angle);
         b.array(in, "Float64", "mass", 1, mass);
         b.array(in, "Int32", "material", 1, material);
+        b.array(in, "Float64", "acceleration", 3, acceleration);
+        b.array(in, "Float64", "angular_acceleration", 1, angularAcceleration);
+        b.array(in, "Float64", "diameter", 1, diameter);
+        if (fluidPressure.size() == id.size() && !id.empty()) {
+            b.array(in, "Float64", "fluid_velocity", 3, fluidVelocity);
+            b.array(in, "Float64", "fluid_pressure", 1, fluidPressure);
+        }
     }
 };
 
 /// Writes the particle file; `shapes` == nullptr treats every particle as a disk.
 void writeParticles(const std::string& path, const model::ParticleStore& s, const model::ShapePool* shapes,
-                    double time) {
+                    double time, const FluidAtParticles* fluid) {
     const std::size_t n = s.size();
+    if (fluid && (fluid->velocity.size() != 2 * n || fluid->pressure.size() != n))
+        throw std::invalid_argument(
+            fmt::format("the flow at the particles has {} velocities and {} pressures "
+                        "for {} particles",
+                        fluid->velocity.size() / 2, fluid->pressure.size(), n));
     const auto polygonShape = [&](std::size_t i) -> std::uint32_t {  // kDiskShape for disks
         if (shapes == nullptr || s.shape.size() != n || s.shape[i] == model::kDiskShape)
             return model::kDiskShape;
@@ -169,12 +215,12 @@ void writeParticles(const std::string& path, const model::ParticleStore& s, cons
         const auto first = static_cast<std::int64_t>(points.size() / 3);
         if (k == model::kDiskShape) {
             points.insert(points.end(), {s.x[i], s.y[i], 0.0});
-            pointData.add(s, i, s.radius[i]);
+            pointData.add(s, i, s.radius[i], fluid);
             vertConnectivity.push_back(first);
             vertOffsets.push_back(
                 static_cast<std::int64_t>(vertConnectivity.size()));  // end offsets (VTK XML 1.0)
             if (polygons > 0) {
-                diskCells.add(s, i, s.radius[i]);
+                diskCells.add(s, i, s.radius[i], fluid);
                 diskPosition.insert(diskPosition.end(), {s.x[i], s.y[i], 0.0});
             }
             continue;
@@ -185,11 +231,11 @@ void writeParticles(const std::string& path, const model::ParticleStore& s, cons
             const Vec2 body = shapes->corners[shapes->start[k] + c];
             points.insert(points.end(),
                           {s.x[i] + (cs * body.x - sn * body.y), s.y[i] + (sn * body.x + cs * body.y), 0.0});
-            pointData.add(s, i, 0.0);
+            pointData.add(s, i, 0.0, fluid);
             polyConnectivity.push_back(first + c);
         }
         polyOffsets.push_back(static_cast<std::int64_t>(polyConnectivity.size()));
-        polyCells.add(s, i, s.radius[i]);
+        polyCells.add(s, i, s.radius[i], fluid);
         polyPosition.insert(polyPosition.end(), {s.x[i], s.y[i], 0.0});
         polyCorners.push_back(static_cast<std::int32_t>(count));
     }
@@ -206,15 +252,8 @@ void writeParticles(const std::string& path, const model::ParticleStore& s, cons
             a.insert(a.end(), tail.begin(), tail.end());
             return a;
         };
-        ParticleArrays cells;
-        cells.id = join(diskCells.id, polyCells.id);
-        cells.radius = join(diskCells.radius, polyCells.radius);
-        cells.velocity = join(diskCells.velocity, polyCells.velocity);
-        cells.speed = join(diskCells.speed, polyCells.speed);
-        cells.omega = join(diskCells.omega, polyCells.omega);
-        cells.angle = join(diskCells.angle, polyCells.angle);
-        cells.mass = join(diskCells.mass, polyCells.mass);
-        cells.material = join(diskCells.material, polyCells.material);
+        ParticleArrays cells = diskCells;
+        cells.append(polyCells);
         std::vector<std::int32_t> kind(disks, 0), corners(disks, 0);
         kind.resize(disks + polygons, 1);
         corners.insert(corners.end(), polyCorners.begin(), polyCorners.end());
@@ -244,12 +283,12 @@ void writeParticles(const std::string& path, const model::ParticleStore& s, cons
 }  // namespace
 
 void writeParticlesVtp(const std::string& path, const model::ParticleStore& s, const model::ShapePool& shapes,
-                       double time) {
-    writeParticles(path, s, &shapes, time);
+                       double time, const FluidAtParticles* fluid) {
+    writeParticles(path, s, &shapes, time, fluid);
 }
 
 void writeParticlesVtp(const std::string& path, const model::ParticleStore& s, double time) {
-    writeParticles(path, s, nullptr, time);
+    writeParticles(path, s, nullptr, time, nullptr);
 }
 
 void writeWallsVtp(const std::string& path, const model::WallSet& w, double time) {
@@ -401,11 +440,12 @@ void PvdWriter::truncateAfter(double time) {
 
 namespace {
 void snapshot(const std::string& outDir, int index, const model::ParticleStore& s,
-              const model::ShapePool* shapes, const model::WallSet& w, double time, PvdWriter& pvd) {
+              const model::ShapePool* shapes, const model::WallSet& w, double time, PvdWriter& pvd,
+              const FluidAtParticles* fluid) {
     const std::filesystem::path dir(outDir);
     const std::string particles = snapshotFileName("particles", index);
     const std::string walls = snapshotFileName("walls", index);
-    writeParticles((dir / particles).string(), s, shapes, time);
+    writeParticles((dir / particles).string(), s, shapes, time, fluid);
     writeWallsVtp((dir / walls).string(), w, time);
     pvd.add(time, 0, particles);
     pvd.add(time, 1, walls);
@@ -414,8 +454,9 @@ void snapshot(const std::string& outDir, int index, const model::ParticleStore& 
 }  // namespace
 
 void writeSnapshot(const std::string& outDir, int index, const model::ParticleStore& s,
-                   const model::ShapePool& shapes, const model::WallSet& w, double time, PvdWriter& pvd) {
-    snapshot(outDir, index, s, &shapes, w, time, pvd);
+                   const model::ShapePool& shapes, const model::WallSet& w, double time, PvdWriter& pvd,
+                   const FluidAtParticles* fluid) {
+    snapshot(outDir, index, s, &shapes, w, time, pvd, fluid);
 }
 
 }  // namespace granulab::io

@@ -9,12 +9,15 @@
 // - Verts: one vertex cell per disk (its centre point). Polys: one polygon cell per polygon
 //   particle (its corners), present only when the scene has polygons. VTK numbers the cells
 //   verts first, then polys: cell data index = disk rank, or disk count + polygon rank.
-// - PointData (always): id, radius, velocity, speed, omega, angle, mass, material. At a disk
+// - PointData (always): id, radius, velocity, speed, omega, angle, mass, material,
+//   acceleration (3 components, z = 0), angular_acceleration, diameter; with a flow field also
+//   fluid_velocity (3 components) and fluid_pressure (FluidAtParticles). At a disk
 //   centre these are the disk's values; at a polygon corner they repeat the polygon's values
 //   except radius = 0, so that the Glyph filter (scale array `radius`) draws nothing there and
 //   colouring by a point array (e.g. `speed`) paints each polygon in one colour.
 // - CellData (only when the scene has polygons): id, radius [m] (disk radius / polygon
-//   circumradius), velocity, speed, omega, angle, mass, material, shape_kind (0 = disk or
+//   circumradius), velocity, speed, omega, angle, mass, material, acceleration,
+//   angular_acceleration, diameter (2 radius), [fluid_velocity, fluid_pressure], shape_kind (0 = disk or
 //   sphere, 1 = polygon), corners (corner count, 0 for disks), position (centre of mass, 3
 //   components, z = 0), for every cell, disks included.
 // In ParaView the polygons show as filled outlines as soon as the .pvd is opened; for the disks
@@ -32,16 +35,28 @@
 
 namespace granulab::io {
 
+/// The flow field at each particle's centre (slot order), written beside the particle arrays
+/// when the scene has one (cfddem spec 5): velocity [m/s] (2 per slot), pressure (1 per slot,
+/// in the field file's units: OpenFOAM's incompressible p is kinematic, [m^2/s^2]); NaN where a
+/// particle lies outside the field's mesh.
+struct FluidAtParticles {
+    std::vector<double> velocity;
+    std::vector<double> pressure;
+};
+
 /// Writes one vertex per disk and one polygon cell per polygon particle (layout: top of this
 /// file). Point data: id, radius [m], velocity [m/s] (3 components, z = 0), speed [m/s], omega
-/// [rad/s], angle [rad], mass [kg], material; field data TimeValue [s].
+/// [rad/s], angle [rad], mass [kg], material, acceleration [m/s^2] (3 components: the force and
+/// torque of the last force evaluation over the mass and inertia, gravity and fluid forces
+/// included), angular_acceleration [rad/s^2], diameter [m] (2 radius: the seed cfddem's set),
+/// and with `fluid` fluid_velocity [m/s] and fluid_pressure; field data TimeValue [s].
 /// In ParaView show the disks with the Glyph filter: glyph type Sphere (or 2D Glyph Circle),
 /// scale array `radius`, scale factor 2 (the glyph sources have radius 0.5, so 2 r = diameter).
 /// `shapes` is the pool the store's `shape` column refers to; a shape index outside it throws
 /// std::invalid_argument. Creates the parent folder if needed; throws std::runtime_error when
 /// the file cannot be written.
 void writeParticlesVtp(const std::string& path, const model::ParticleStore& s, const model::ShapePool& shapes,
-                       double time);
+                       double time, const FluidAtParticles* fluid = nullptr);
 /// Without a shape pool: every particle is written as a vertex with its radius (a polygon
 /// particle with its circumradius, like a disk).
 void writeParticlesVtp(const std::string& path, const model::ParticleStore& s, double time);
@@ -95,6 +110,7 @@ private:
 /// Convenience for the run command: writes OUTDIR/vtk/particles_NNNNNN.vtp (part 0, disks and
 /// polygons) and OUTDIR/vtk/walls_NNNNNN.vtp (part 1), adds both to `pvd` and rewrites it.
 void writeSnapshot(const std::string& outDir, int index, const model::ParticleStore& s,
-                   const model::ShapePool& shapes, const model::WallSet& w, double time, PvdWriter& pvd);
+                   const model::ShapePool& shapes, const model::WallSet& w, double time, PvdWriter& pvd,
+                   const FluidAtParticles* fluid = nullptr);
 
 }  // namespace granulab::io

@@ -15,6 +15,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -117,6 +118,54 @@ TEST(VtkWriterReadback, ParticlesWallsAndCollection) {
     ASSERT_EQ(collection->GetNumberOfNestedElements(), 4);
     EXPECT_STREQ(collection->GetNestedElement(3)->GetAttribute("part"), "1");
     EXPECT_STREQ(collection->GetNestedElement(0)->GetAttribute("file"), "vtk/particles_000000.vtp");
+}
+
+// The seed cfddem's particle set (acceleration, angular acceleration, diameter) and the flow at
+// the particles: a = F / m and alpha = T / I of the last force evaluation (gravity and fluid
+// forces are in F), d = 2 r; the flow arrays only when the scene has a field, NaN outside it.
+TEST(VtkWriterReadback, AccelerationsDiameterAndTheFlowAtTheParticles) {
+    const test::ScratchDir scratch;
+    Scene scene;
+    model::ParticleStore& s = scene.store;
+    for (std::size_t k = 0; k < 3; ++k) {
+        s.fx[k] = 1e-3 * static_cast<double>(k + 1);
+        s.fy[k] = -2e-2;
+        s.torque[k] = 3e-9 * static_cast<double>(k + 1);
+    }
+    FluidAtParticles fluid;
+    fluid.velocity = {0.5, -0.25, 1.0, 0.0, std::nan(""), std::nan("")};
+    fluid.pressure = {10.0, 20.0, std::nan("")};  // the third particle lies outside the mesh
+    const fs::path withFlow = scratch.path / "with_flow.vtp";
+    writeParticlesVtp(withFlow.string(), s, model::ShapePool{}, 0.25, &fluid);
+    vtkSmartPointer<vtkPolyData> p = readVtp(withFlow);
+    vtkPointData* pd = p->GetPointData();
+    for (const char* name :
+         {"acceleration", "angular_acceleration", "diameter", "fluid_velocity", "fluid_pressure"})
+        ASSERT_NE(pd->GetArray(name), nullptr) << name;
+    EXPECT_EQ(pd->GetArray("acceleration")->GetNumberOfComponents(), 3);
+    EXPECT_EQ(pd->GetArray("fluid_velocity")->GetNumberOfComponents(), 3);
+    for (vtkIdType i = 0; i < 3; ++i) {
+        const auto k = static_cast<std::size_t>(i);
+        EXPECT_EQ(value(pd->GetArray("acceleration"), i, 0), s.fx[k] * s.invMass[k]);
+        EXPECT_EQ(value(pd->GetArray("acceleration"), i, 1), s.fy[k] * s.invMass[k]);
+        EXPECT_EQ(value(pd->GetArray("acceleration"), i, 2), 0.0);
+        EXPECT_DOUBLE_EQ(value(pd->GetArray("acceleration"), i, 0), s.fx[k] / s.mass[k]);
+        EXPECT_EQ(value(pd->GetArray("angular_acceleration"), i), s.torque[k] * s.invInertia[k]);
+        EXPECT_EQ(value(pd->GetArray("diameter"), i), 2 * s.radius[k]);
+    }
+    EXPECT_EQ(value(pd->GetArray("fluid_velocity"), 0, 0), 0.5);
+    EXPECT_EQ(value(pd->GetArray("fluid_velocity"), 0, 1), -0.25);
+    EXPECT_EQ(value(pd->GetArray("fluid_velocity"), 1, 0), 1.0);
+    EXPECT_EQ(value(pd->GetArray("fluid_pressure"), 1), 20.0);
+    EXPECT_TRUE(std::isnan(value(pd->GetArray("fluid_velocity"), 2, 0)));
+    EXPECT_TRUE(std::isnan(value(pd->GetArray("fluid_pressure"), 2)));
+
+    // Without a field: no flow arrays; a flow of the wrong length is refused.
+    const fs::path dry = scratch.path / "dry.vtp";
+    writeParticlesVtp(dry.string(), s, model::ShapePool{}, 0.25);
+    EXPECT_EQ(readVtp(dry)->GetPointData()->GetArray("fluid_velocity"), nullptr);
+    fluid.pressure.pop_back();
+    EXPECT_THROW(writeParticlesVtp(dry.string(), s, model::ShapePool{}, 0.25, &fluid), std::invalid_argument);
 }
 
 }  // namespace
