@@ -90,17 +90,60 @@ struct WallQuad {
     Vec2 world[4];  ///< [m] corners, counter-clockwise
     geom::PolygonFrame frame;
 };
-inline void wallQuad(Vec2 a, Vec2 b, Vec2 from, Real thickness, WallQuad& q) noexcept {
-    if (cross(b - a, from - a) < 0) std::swap(a, b);  // particle on the left of a -> b
+
+/// Unit direction of a plate's end edge at a shared corner, into the solid side `out`: the bisector
+/// of the angle between the segment (e, the unit direction from the corner along it) and its
+/// neighbour (u, from the corner along the neighbouring segment; zero: no neighbour), where the
+/// corner is convex seen from the grain. Two plates that meet there then divide the wedge behind
+/// it along the bisector, and a grain pressing on the corner has its overlap counted once (with
+/// square ends both plates held the whole wedge, and the grain felt it twice). Perpendicular (out)
+/// elsewhere: without a neighbour; at a concave corner, where a mitre would lean past the segment's
+/// end into space that is free on the grain's side (a polyline is solid on both sides, so the plate
+/// behind a face seen from outside a corner lies where other grains may be); for a straight
+/// continuation; and at a corner sharper than about 23 degrees, whose mitre would reach more than
+/// 5 thicknesses along the wall.
+inline Vec2 plateEnd(Vec2 e, Vec2 u, Vec2 out) noexcept {
+    constexpr Real kMinSlant = 0.2;  // cosine between the end edge and `out`
+    const Vec2 m = e + u;
+    const Real len = norm(m);
+    if ((u.x == 0 && u.y == 0) || !(len > 1e-9)) return out;
+    const Vec2 unit = dot(m, out) >= 0 ? m / len : m / -len;
+    if (dot(unit, e) <= 0) return out;  // leans outwards: a concave corner seen from the grain
+    return dot(unit, out) >= kMinSlant ? unit : out;
+}
+
+/// The plate of thickness `thickness` behind segment [a, b], on the side away from `from`, its ends
+/// mitred along the bisectors of the corners it shares (plateEnd): nextAtA / nextAtB [unit] point
+/// from a / b along the neighbouring segment (zero where the end is free). Falls back to square
+/// ends where the mitres would cross within the thickness (a segment shorter than the plate).
+inline void wallQuad(Vec2 a, Vec2 b, Vec2 from, Real thickness, WallQuad& q, Vec2 nextAtA = {},
+                     Vec2 nextAtB = {}) noexcept {
+    if (cross(b - a, from - a) < 0) {  // particle on the left of a -> b
+        std::swap(a, b);
+        std::swap(nextAtA, nextAtB);
+    }
     const Vec2 d = b - a;
     const Real len = norm(d);
-    const Vec2 out = len > 0 ? Vec2{d.y, -d.x} / len : Vec2{0, -1};      // right of a -> b: the solid side
-    const Vec2 w[4] = {a, a + out * thickness, b + out * thickness, b};  // counter-clockwise
+    const Vec2 out = len > 0 ? Vec2{d.y, -d.x} / len : Vec2{0, -1};  // right of a -> b: the solid side
+    const Vec2 e = len > 0 ? d / len : Vec2{1, 0};
+    const Vec2 endA = plateEnd(e, nextAtA, out), endB = plateEnd(-e, nextAtB, out);
+    Vec2 farA = a + endA * (thickness / dot(endA, out)), farB = b + endB * (thickness / dot(endB, out));
+    if (!(dot(farB - farA, d) > 0)) {  // the mitres cross: square ends
+        farA = a + out * thickness;
+        farB = b + out * thickness;
+    }
+    const Vec2 w[4] = {a, farA, farB, b};  // counter-clockwise
     for (int k = 0; k < 4; ++k) q.world[k] = w[k];
     q.frame.corners = q.world;
     q.frame.n = 4;
     q.frame.centre = (w[0] + w[1] + w[2] + w[3]) * 0.25;
-    q.frame.inradius = 0.5 * std::min(thickness, len);
+    Real inradius = thickness;  // about the centre: its distance to the nearest edge line
+    for (int k = 0; k < 4; ++k) {
+        const Vec2 edge = w[(k + 1) % 4] - w[k];
+        const Real l = norm(edge);
+        if (l > 0) inradius = std::min(inradius, std::abs(cross(edge, q.frame.centre - w[k])) / l);
+    }
+    q.frame.inradius = inradius;
 }
 
 /// Geometry of particle i (polygon or disk) against an immovable convex polygon `wall` (world
@@ -133,8 +176,18 @@ inline geom::AreaContact wallGeometry(const model::ParticleStore& s, const Shape
         body.inradius = walls.bodyInradius[seg.wall];
         return particleWallGeometry(s, sc, i, body, cache, features);
     }
+    // The neighbours at the shared corners (a polyline's plates are mitred there).
+    const Vec2 nextAtA = seg.startShared ? -seg.prevDirection : Vec2{};
+    Vec2 nextAtB{};
+    if (seg.endShared) {
+        const std::uint32_t last = wall.firstSegment + wall.segmentCount - 1;
+        const auto& next = walls.segments[segIndex == last ? wall.firstSegment : segIndex + 1];
+        const Vec2 dn = next.b - next.a;
+        const Real ln = norm(dn);
+        if (ln > 0) nextAtB = dn / ln;
+    }
     WallQuad quad;
-    wallQuad(seg.a, seg.b, {s.x[i], s.y[i]}, 2 * s.radius[i], quad);
+    wallQuad(seg.a, seg.b, {s.x[i], s.y[i]}, 2 * s.radius[i], quad, nextAtA, nextAtB);
     return particleWallGeometry(s, sc, i, quad.frame, cache, features);
 }
 

@@ -6,9 +6,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "../support.hpp"
+#include "dem/forces_area.hpp"
+#include "geom/circle_contact.hpp"
+#include "geom/polygon.hpp"
 
 namespace granulab {
 namespace {
@@ -72,6 +78,76 @@ material = "wall"
     EXPECT_NEAR(st.fx[0], F / std::sqrt(2.0), 2e-4 * F);
     EXPECT_NEAR(st.fy[0], F / std::sqrt(2.0), 2e-4 * F);
     EXPECT_NEAR(st.torque[0], 0.0, 1e-9 * F * r);
+}
+
+// A polyline wall stands for the plates of thickness 2 r behind its segments (spec 3.7). At a
+// convex corner the two plates used to overlap behind it, and a grain pressing on the corner had
+// its overlap counted twice (issue 34). Mitred along the corner's bisector, the plates cover the
+// solid once: the overlap areas of the two plate contacts add up to the grain's overlap with the
+// body that the polyline outlines, for a disk and for a square. A plate never reaches past its
+// segment's end into space that is free on the grain's side: at a concave corner (a grain in a
+// box's corner, or beside a face whose other side's plate it meets) the ends stay square.
+TEST(WallBodies, PolylineCornerCountsTheOverlapOnce) {
+    // The unit square drawn counter-clockwise; the corner (1, 1) is convex seen from outside
+    // (grains at x, y > 1) and the corner of the box seen from inside (grains at x, y < 1).
+    const std::vector<Vec2> square{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    const Vec2 up{0, 1}, left{-1, 0};  // from (1, 1) along the two segments that meet there
+    const Real r = 0.1;
+    const auto plates = [&](Vec2 centre) {  // the right side and the top, mitred at (1, 1)
+        dem::area::WallQuad right, top;
+        dem::area::wallQuad({1, 0}, {1, 1}, centre, 2 * r, right, {}, left);
+        dem::area::wallQuad({1, 1}, {0, 1}, centre, 2 * r, top, -up, {});
+        return std::pair{right, top};
+    };
+    for (const Real a : {0.02, 0.04, 0.06}) {  // the disk reaches the corner: a sqrt(2) < r
+        // Outside, on the convex corner: the disk's lens inside the square, counted once.
+        const Vec2 c{1 + a, 1 + a};
+        const auto [right, top] = plates(c);
+        const Real plated = geom::circlePolygonContact(c, r, right.world, 4).area +
+                            geom::circlePolygonContact(c, r, top.world, 4).area;
+        const Real body = geom::circlePolygonContact(c, r, square.data(), 4).area;
+        ASSERT_GT(body, 0);
+        EXPECT_NEAR(plated, body, 1e-12) << "disk at the convex corner, a = " << a;
+        {  // square ends, as before issue 34: both plates hold the whole lens
+            dem::area::WallQuad rightSquare, topSquare;
+            dem::area::wallQuad({1, 0}, {1, 1}, c, 2 * r, rightSquare);
+            dem::area::wallQuad({1, 1}, {0, 1}, c, 2 * r, topSquare);
+            EXPECT_NEAR(geom::circlePolygonContact(c, r, rightSquare.world, 4).area +
+                            geom::circlePolygonContact(c, r, topSquare.world, 4).area,
+                        2 * body, 1e-12);
+        }
+        // A square grain of half side 1.2 r, turned by 0.3 rad, on the same corner.
+        std::vector<Vec2> grain;
+        for (int k = 0; k < 4; ++k) {
+            const Real phi = 0.3 + k * std::numbers::pi / 2;
+            grain.push_back(c + Vec2{std::cos(phi), std::sin(phi)} * (r * std::sqrt(2.0)) * 1.2);
+        }
+        const std::vector<Vec2> qr(right.world, right.world + 4), qt(top.world, top.world + 4);
+        const Real plated2 = geom::convexOverlap(grain, qr).area + geom::convexOverlap(grain, qt).area;
+        const Real body2 = geom::convexOverlap(grain, square).area;
+        ASSERT_GT(body2, 0);
+        EXPECT_NEAR(plated2, body2, 1e-12) << "square at the convex corner, a = " << a;
+        // Inside the box, in its corner (concave): both plates keep square ends. Outside beside
+        // the right face just below the corner: the top's plate lies above y = 1 (a polyline is
+        // solid on both sides), where the corner is concave, and keeps its square end instead of
+        // leaning over the free space at x > 1; the right face's plate is mitred (convex there).
+        const auto squareEnds = [&](Vec2 at, Vec2 a0, Vec2 b0, const dem::area::WallQuad& q) {
+            dem::area::WallQuad square;
+            dem::area::wallQuad(a0, b0, at, 2 * r, square);
+            for (int k = 0; k < 4; ++k) {
+                EXPECT_EQ(q.world[k].x, square.world[k].x) << "corner " << k;
+                EXPECT_EQ(q.world[k].y, square.world[k].y) << "corner " << k;
+            }
+        };
+        const Vec2 inBox{1 - a, 1 - a}, beside{1 + a, 1 - 2 * a};
+        const auto [rightIn, topIn] = plates(inBox);
+        squareEnds(inBox, {1, 0}, {1, 1}, rightIn);
+        squareEnds(inBox, {1, 1}, {0, 1}, topIn);
+        const auto [rightBeside, topBeside] = plates(beside);
+        squareEnds(beside, {1, 1}, {0, 1}, topBeside);
+        EXPECT_NEAR(rightBeside.world[1].x, 1 - 2 * r, 1e-15);  // the mitre's far corner (1 - 2r, 1 - 2r)
+        EXPECT_NEAR(rightBeside.world[1].y, 1 - 2 * r, 1e-15);
+    }
 }
 
 /// A disk shot at the top corner of a 1 mm divider: the divider as a wall body, and as an
