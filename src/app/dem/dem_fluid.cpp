@@ -5,6 +5,8 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <limits>
+#include <optional>
 
 #include "fluid/drag_laws.hpp"
 
@@ -155,18 +157,48 @@ void appendFluidSeriesRow(const model::SceneDef& scene, const dem::World& world,
     if (fluid::needsVoidage(world.config().fluid->forces.drag)) row.push_back(st.minVoidage);
 }
 
-std::vector<io::FinalExtraColumn> fluidFinalColumns(const dem::World& world) {
+namespace {
+/// The flow field sampled at every particle's centre, in slot order; none without a loaded field
+/// (an empty vector: a loaded field and no particle).
+std::optional<std::vector<fluid::FluidSample>> flowAtCentres(const dem::World& world) {
     const fluid::FieldSeries* f = world.field();
-    if (!f || !f->ready()) return {};
+    if (!f || !f->ready()) return std::nullopt;
     const auto& s = world.store();
-    std::vector<io::FinalExtraColumn> cols = {{"fluid_ux", std::vector<Real>(s.size())},
-                                              {"fluid_uy", std::vector<Real>(s.size())}};
-    for (std::size_t i = 0; i < s.size(); ++i) {
-        const Vec2 u = f->sample({s.x[i], s.y[i]}).u;
-        cols[0].values[i] = u.x;
-        cols[1].values[i] = u.y;
+    std::vector<fluid::FluidSample> out(s.size());
+    for (std::size_t i = 0; i < s.size(); ++i) out[i] = f->sample({s.x[i], s.y[i]});
+    return out;
+}
+}  // namespace
+
+std::vector<io::FinalExtraColumn> fluidFinalColumns(const dem::World& world) {
+    const auto flow = flowAtCentres(world);
+    if (!flow) return {};
+    std::vector<io::FinalExtraColumn> cols = {{"fluid_ux", std::vector<Real>(flow->size())},
+                                              {"fluid_uy", std::vector<Real>(flow->size())}};
+    for (std::size_t i = 0; i < flow->size(); ++i) {
+        cols[0].values[i] = (*flow)[i].u.x;
+        cols[1].values[i] = (*flow)[i].u.y;
     }
     return cols;
+}
+
+io::FluidAtParticles fluidSnapshotArrays(const dem::World& world) {
+    io::FluidAtParticles out;
+    if (!world.field()) return out;
+    const std::size_t n = world.store().size();
+    constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+    out.velocity.assign(2 * n, kNaN);
+    out.pressure.assign(n, kNaN);
+    const auto flow = flowAtCentres(world);
+    if (!flow) return out;
+    for (std::size_t i = 0; i < flow->size(); ++i) {
+        const fluid::FluidSample& f = (*flow)[i];
+        if (!f.inside) continue;
+        out.velocity[2 * i] = f.u.x;
+        out.velocity[2 * i + 1] = f.u.y;
+        out.pressure[i] = f.p;
+    }
+    return out;
 }
 
 nlohmann::json fluidSummary(const model::SceneDef& scene, const dem::World& world, const std::string& note) {

@@ -11,6 +11,7 @@
 #include "dem/world.hpp"
 #include "io/csv_writers.hpp"
 #include "io/flow_fields.hpp"
+#include "io/vtk_writer.hpp"
 #include "model/scene_def.hpp"
 
 namespace granulab::app {
@@ -29,6 +30,9 @@ void appendFluidSeriesRow(const model::SceneDef& scene, const dem::World& world,
 /// final.csv columns fluid_ux, fluid_uy [m/s]: the fluid velocity at each particle (empty without
 /// [fluid] or before the first field is loaded).
 std::vector<io::FinalExtraColumn> fluidFinalColumns(const dem::World& world);
+/// The flow at every particle's centre for a VTK snapshot (io::FluidAtParticles; empty without
+/// [fluid]; NaN outside the field's mesh, or before the first field is loaded).
+io::FluidAtParticles fluidSnapshotArrays(const dem::World& world);
 /// summary.json "fluid": the fields, their loads, the interpolation, the drag law.
 nlohmann::json fluidSummary(const model::SceneDef& scene, const dem::World& world, const std::string& note);
 

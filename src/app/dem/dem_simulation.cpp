@@ -8,7 +8,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <set>
 
 #include "app/dem/dem_contacts.hpp"
@@ -25,7 +24,6 @@
 #include "dem/parallel/domain_world.hpp"
 #include "dem/setup.hpp"
 #include "dem/step_clock.hpp"
-#include "fluid/field_series.hpp"
 #include "io/csv_writers.hpp"
 #include "io/validate_dem.hpp"
 #include "model/material_names.hpp"
@@ -318,7 +316,7 @@ public:
                 "of that step)",
                 index, m_world.time()));
         if (!m_scene.output.vtk) return;
-        const io::FluidAtParticles fluid = fluidAtParticles();
+        const io::FluidAtParticles fluid = fluidSnapshotArrays(m_world);
         io::writeSnapshot(dir, index, m_world.store(), m_world.shapes(), m_world.walls(), m_world.time(), pvd,
                           m_world.field() ? &fluid : nullptr);
         // The records are those of this step's force evaluation (recorded because the step ends at a
@@ -326,27 +324,6 @@ public:
         if (writesContactFiles() && m_world.contactLog().step == m_world.stepIndex())
             writeContactSnapshot(dir, index, m_world, pvd);
         if (!m_scene.output.analyses.empty()) analyzeSnapshot(dir, index);
-    }
-
-    /// The flow field at every particle's centre for the snapshot (empty without [fluid]; NaN
-    /// outside the field's mesh, or before the first field is loaded).
-    io::FluidAtParticles fluidAtParticles() const {
-        io::FluidAtParticles out;
-        const fluid::FieldSeries* field = m_world.field();
-        if (!field) return out;
-        const model::ParticleStore& s = m_world.store();
-        constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-        out.velocity.assign(2 * s.size(), kNaN);
-        out.pressure.assign(s.size(), kNaN);
-        if (!field->ready()) return out;
-        for (std::size_t i = 0; i < s.size(); ++i) {
-            const fluid::FluidSample f = field->sample({s.x[i], s.y[i]});
-            if (!f.inside) continue;
-            out.velocity[2 * i] = f.u.x;
-            out.velocity[2 * i + 1] = f.u.y;
-            out.pressure[i] = f.p;
-        }
-        return out;
     }
 
     void writeLine(const std::string& dir) override {
